@@ -1,0 +1,60 @@
+// genmesh/property_maps.h — the property maps every algorithm reads through.
+//
+// Algorithms never name a backend's storage. They ask for
+//   get(genmesh::vertex_point, g)   a read/write boost property map vertex → point
+//   get(genmesh::vertex_index, g)   vertex → std::size_t in [0, index_bound(vertex_index, g))
+//   (and halfedge_index, edge_index, face_index alike)
+// found by argument-dependent lookup through the tag, which lives in namespace
+// genmesh. A backend supplies these overloads next to its graph traits:
+// <genmesh/halfedge_mesh.h> for the own mesh, <genmesh/adaptors/cgal.h> and
+// <genmesh/adaptors/openmesh.h> for the others.
+//
+// index_bound(tag, g) is the size a scratch array indexed by that index map
+// needs (it counts removed, not yet collected elements too); it is *not* the
+// live count num_vertices(g) (see concepts/genmesh/concepts/descriptor.h).
+#pragma once
+
+#include <genmesh/point_traits.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <concepts>
+#include <cstddef>
+#include <utility>
+
+namespace genmesh {
+
+struct vertex_point_t {};
+inline constexpr vertex_point_t vertex_point{};
+
+struct vertex_index_t {};
+inline constexpr vertex_index_t vertex_index{};
+struct halfedge_index_t {};
+inline constexpr halfedge_index_t halfedge_index{};
+struct edge_index_t {};
+inline constexpr edge_index_t edge_index{};
+struct face_index_t {};
+inline constexpr face_index_t face_index{};
+
+/// The type of g's vertex point map.
+template <class G>
+using vertex_point_map_t = decltype(get(vertex_point, std::declval<G&>()));
+
+/// The point type stored in g.
+template <class G>
+using point_t = typename boost::property_traits<vertex_point_map_t<G>>::value_type;
+
+/// A graph whose vertex positions genmesh can read and write.
+template <class G>
+concept HasVertexPoints = requires(G& g) {
+  get(vertex_point, g);
+} && Point3<point_t<G>>;
+
+/// A graph with dense integer indices for Tag's elements, and their bound.
+template <class G, class Tag>
+concept HasIndexMap = requires(const G& g) {
+  get(Tag{}, g);
+  { index_bound(Tag{}, g) } -> std::convertible_to<std::size_t>;
+};
+
+} // namespace genmesh
