@@ -1,0 +1,41 @@
+// tests/backends.h — the backends every typed test runs on, and test data paths.
+#pragma once
+
+#include <genmesh/adaptors/cgal.h>
+#include <genmesh/halfedge_mesh.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+namespace genmesh_test {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Surface_mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Halfedge_mesh = genmesh::Halfedge_mesh<>;
+
+/// Every backend a typed algorithm test runs on (the incidence mesh joins
+/// with its own issue).
+using Backends = ::testing::Types<Halfedge_mesh, Surface_mesh>;
+
+/// A real mesh from libcgal-demo (fetched by scripts/run.sh setup). Missing
+/// data is a failure, never a silent skip.
+inline std::string real_mesh(const std::string& name) {
+  std::filesystem::path p = std::filesystem::path(GENMESH_DATA_DIR) / "meshes" / name;
+  if (!std::filesystem::exists(p))
+    throw std::runtime_error("test data missing: " + p.string() +
+                             " (run scripts/run.sh setup)");
+  return p.string();
+}
+
+/// A fresh scratch path under the build tree.
+inline std::string tmp_path(const std::string& name) {
+  return (std::filesystem::path(GENMESH_TEST_TMP_DIR) / name).string();
+}
+
+} // namespace genmesh_test
