@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <unistd.h>
+
 namespace genmesh_test {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -33,9 +35,13 @@ inline std::string real_mesh(const std::string& name) {
   return p.string();
 }
 
-/// A fresh scratch path under the build tree.
+/// A scratch path under the build tree, private to this process (ctest runs
+/// test processes in parallel).
 inline std::string tmp_path(const std::string& name) {
-  return (std::filesystem::path(GENMESH_TEST_TMP_DIR) / name).string();
+  const std::filesystem::path dir =
+      std::filesystem::path(GENMESH_TEST_TMP_DIR) / std::to_string(::getpid());
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
 }
 
 } // namespace genmesh_test

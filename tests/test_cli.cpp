@@ -1,0 +1,211 @@
+// The genmesh program as a user runs it: exit codes (0 ok, 1 invalid mesh,
+// 2 bad input or usage), messages naming the file and line, --json records
+// whose counts equal CGAL's on the same file, on every backend.
+#include "backends.h"
+
+#include <CGAL/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+using genmesh_test::real_mesh;
+using genmesh_test::tmp_path;
+
+struct Run {
+  int exit_code;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+// Runs the genmesh program with `args` (already shell-quoted where needed).
+Run genmesh(const std::string& args) {
+  const std::string err_file = tmp_path("cli_stderr.txt");
+  const std::string cmd = std::string(GENMESH_CLI) + " " + args + " 2>" + err_file;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) throw std::runtime_error("popen failed: " + cmd);
+  std::string out;
+  std::array<char, 4096> buf;
+  while (std::size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
+  const int status = pclose(pipe);
+  std::ifstream e(err_file);
+  std::stringstream es;
+  es << e.rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, es.str()};
+}
+
+// The integer field `key` of a one-line JSON record.
+long long json_int(const std::string& json, const std::string& key) {
+  std::smatch m;
+  if (!std::regex_search(json, m, std::regex("\"" + key + "\":(-?[0-9]+)")))
+    throw std::runtime_error("no integer field '" + key + "' in: " + json);
+  return std::stoll(m[1]);
+}
+
+bool json_bool(const std::string& json, const std::string& key) {
+  std::smatch m;
+  if (!std::regex_search(json, m, std::regex("\"" + key + "\":(true|false)")))
+    throw std::runtime_error("no boolean field '" + key + "' in: " + json);
+  return m[1] == "true";
+}
+
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+TEST(Cli, DemoRunsEveryBackendAndTheyAgree) {
+  Run r = genmesh("demo");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("all backends agree"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("surface-mesh"), std::string::npos);
+  EXPECT_EQ(r.out.find("DIFFERS"), std::string::npos) << r.out;
+
+  Run j = genmesh("demo --json");
+  EXPECT_EQ(j.exit_code, 0);
+  std::istringstream lines(j.out);
+  int records = 0;
+  for (std::string line; std::getline(lines, line); ++records)
+    EXPECT_TRUE(json_bool(line, "same_as_reference")) << line;
+  EXPECT_GE(records, 12);  // six meshes, two backends
+}
+
+// `info --json` on real meshes equals CGAL's own reading of the file.
+TEST(Cli, InfoCountsEqualCgalOnRealMeshes) {
+  for (const char* name : {"elephant.off", "armadillo.off", "blobby_3cc.off", "cube_quad.off", "b9.ply"}) {
+    const std::string path = real_mesh(name);
+    genmesh_test::Surface_mesh sm;
+    ASSERT_TRUE(CGAL::IO::read_polygon_mesh(path, sm)) << path;
+    std::vector<genmesh_test::Surface_mesh::Halfedge_index> cycles;
+    CGAL::Polygon_mesh_processing::extract_boundary_cycles(sm, std::back_inserter(cycles));
+    auto fcc = sm.add_property_map<genmesh_test::Surface_mesh::Face_index, std::size_t>("f:cc").first;
+    const std::size_t components = CGAL::Polygon_mesh_processing::connected_components(sm, fcc);
+
+    for (const char* backend : {"halfedge", "surface-mesh"}) {
+      SCOPED_TRACE(std::string(name) + " on " + backend);
+      Run r = genmesh("info --json --backend " + std::string(backend) + " " + path);
+      ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+      EXPECT_EQ(json_int(r.out, "vertices"), static_cast<long long>(sm.number_of_vertices()));
+      EXPECT_EQ(json_int(r.out, "edges"), static_cast<long long>(sm.number_of_edges()));
+      EXPECT_EQ(json_int(r.out, "faces"), static_cast<long long>(sm.number_of_faces()));
+      EXPECT_EQ(json_int(r.out, "boundary_loops"), static_cast<long long>(cycles.size()));
+      EXPECT_EQ(json_int(r.out, "components"), static_cast<long long>(components));
+      EXPECT_EQ(json_int(r.out, "euler_characteristic"),
+                static_cast<long long>(sm.number_of_vertices()) -
+                    static_cast<long long>(sm.number_of_edges()) +
+                    static_cast<long long>(sm.number_of_faces()));
+      EXPECT_TRUE(json_bool(r.out, "manifold"));
+      EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << "one line: " << r.out;
+    }
+  }
+}
+
+// A fin: three triangles share the edge 0-1.
+//
+//        2
+//        |
+//   3 -- 0 -- 4      (all three faces hang on edge 0-1)
+//        |
+//        1
+TEST(Cli, CheckRefusesNonManifoldWithExitOne) {
+  const std::string path = tmp_path("fin.off");
+  write_file(path, "OFF\n5 3 0\n0 0 0\n0 -1 0\n0 1 1\n-1 0 1\n1 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+  for (const char* backend : {"halfedge", "surface-mesh"}) {
+    Run r = genmesh(std::string("check --backend ") + backend + " " + path);
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find("non-manifold"), std::string::npos) << r.out;
+  }
+}
+
+TEST(Cli, CheckRepairsABowTie) {
+  // Two triangles touching at vertex 0 only.
+  const std::string path = tmp_path("bowtie.off");
+  write_file(path, "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n-1 0 0\n-1 -1 0\n3 0 1 2\n3 0 3 4\n");
+  Run refused = genmesh("check " + path);
+  EXPECT_EQ(refused.exit_code, 1) << refused.out << refused.err;
+  Run repaired = genmesh("info --json --repair " + path);
+  EXPECT_EQ(repaired.exit_code, 0) << repaired.out << repaired.err;
+  EXPECT_EQ(json_int(repaired.out, "vertices"), 6);  // the bow-tie vertex is split in two
+  EXPECT_EQ(json_int(repaired.out, "components"), 2);
+}
+
+TEST(Cli, BadInputExitsTwoNamingFileAndLine) {
+  const std::string path = tmp_path("truncated.off");
+  write_file(path, "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n");  // one vertex and both faces missing
+  Run r = genmesh("info " + path);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(path), std::string::npos) << r.err;
+  EXPECT_TRUE(std::regex_search(r.err, std::regex(":[0-9]+:"))) << "no line number: " << r.err;
+
+  Run missing = genmesh("check " + tmp_path("does-not-exist.off"));
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("does-not-exist.off"), std::string::npos) << missing.err;
+
+  const std::string nan_path = tmp_path("nan.off");
+  write_file(nan_path, "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n");
+  Run nan = genmesh("check " + nan_path);
+  EXPECT_EQ(nan.exit_code, 2) << nan.out;
+  EXPECT_NE(nan.err.find("nan.off"), std::string::npos) << nan.err;
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+  EXPECT_EQ(genmesh("").exit_code, 2);
+  EXPECT_EQ(genmesh("frobnicate").exit_code, 2);
+  Run r = genmesh("info --backend nonsense " + real_mesh("cube.off"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("nonsense"), std::string::npos) << r.err;
+  EXPECT_EQ(genmesh("info").exit_code, 2);
+  EXPECT_EQ(genmesh("convert " + real_mesh("cube.off")).exit_code, 2);
+}
+
+TEST(Cli, ConvertRoundTripsThroughEveryFormat) {
+  const std::string in = real_mesh("elephant.off");
+  Run ref = genmesh("info --json " + in);
+  ASSERT_EQ(ref.exit_code, 0) << ref.err;
+  std::string current = in;
+  for (std::string out : {"e.ply", "e_bin.ply", "e.obj", "e.stl", "e_bin.stl", "e.off"}) {
+    const std::string path = tmp_path(out);
+    std::filesystem::remove(path);
+    const bool binary = out.find("_bin") != std::string::npos;
+    Run c = genmesh("convert " + current + " " + path + (binary ? " --binary" : ""));
+    ASSERT_EQ(c.exit_code, 0) << out << ": " << c.out << c.err;
+    Run info = genmesh("info --json " + path);
+    ASSERT_EQ(info.exit_code, 0) << out << ": " << info.err;
+    for (const char* key : {"vertices", "edges", "faces", "boundary_loops", "euler_characteristic"})
+      EXPECT_EQ(json_int(info.out, key), json_int(ref.out, key)) << out << " " << key;
+    current = path;
+  }
+}
+
+TEST(Cli, FailedConvertLeavesExistingOutputIntact) {
+  const std::string out = tmp_path("keep_me.off");
+  write_file(out, "precious");
+  const std::string bad = tmp_path("bad_index.off");
+  write_file(bad, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");  // index 7 out of range
+  Run r = genmesh("convert " + bad + " " + out);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(read_file(out), "precious");
+
+  Run nodir = genmesh("convert " + real_mesh("cube.off") + " " + tmp_path("no/such/dir/x.off"));
+  EXPECT_EQ(nodir.exit_code, 2);
+  EXPECT_NE(nodir.err.find("x.off"), std::string::npos) << nodir.err;
+}
+
+} // namespace
