@@ -1,0 +1,1519 @@
+// genmesh/halfedge_mesh.h — genmesh's own halfedge mesh: Halfedge_mesh<Point>.
+//
+// What it is: an index-based halfedge data structure stored as a structure of
+// arrays with 32-bit indices. The two halfedges of edge e are 2e and 2e+1, so
+// opposite(h) = h^1 and edge(h).idx() = h/2 are arithmetic. Per halfedge it stores
+// next, prev, target vertex and face; per vertex one halfedge *targeting* it
+// (null if isolated); per face one of its halfedges; one removed bit per vertex,
+// edge and face. Positions and any user data are typed dynamic properties
+// (positions are the vertex property "v:point").
+//
+// Guarantees:
+// - The memory layout is, array for array, CGAL::Surface_mesh's (same 4-byte
+//   indices, same removed bits, same std::vector growth), so bytes per
+//   element never exceed Surface_mesh's on the same mesh (about 66 bytes per
+//   triangle with double points); memory_bytes() reports the total.
+// - Index allocation is CGAL::Surface_mesh's exactly: remove_* only marks and
+//   pushes onto a LIFO free list (threaded through the removed element's own
+//   halfedge/next slot), add_* reuses the most recently freed index when
+//   recycling is on (the default), else appends; a recycled element's
+//   connectivity is null and its properties get their default values again.
+//   Iteration is by increasing index, skipping removed elements. So a sequence
+//   of low-level edits (and every CGAL algorithm made of them) gives the same
+//   indices on both meshes.
+// - collect_garbage() compacts *preserving the relative order* of surviving
+//   elements (Surface_mesh instead swaps the last live element into each hole;
+//   collect_garbage(Garbage_order::like_surface_mesh) does that too) and
+//   returns the old -> new maps. Determinism across backends is stated up
+//   to canonical soups, so this deviation is harmless there, and it keeps
+//   iteration order meaningful after compaction.
+// - Like Surface_mesh's, an Edge_index made by edge(h) remembers h, so
+//   halfedge(edge(h)) == h and CGAL code relying on that behaves identically.
+//
+// Limits: the low-level edits (set_next, remove_edge, ...) keep nothing
+// consistent by themselves, as in CGAL; algorithms use local operations.
+// num_vertices(m) & co. are *live* counts (genmesh's convention), whereas
+// CGAL's BGL concept only promises an upper bound and Surface_mesh returns
+// its index bound; scratch arrays must be sized by index_bound / *_size().
+//
+// The whole CGAL BGL free-function surface (graph_traits, next, opposite,
+// add_face, set_next, ...) is at the bottom of this header, found by ADL.
+// No CGAL header is needed here; <genmesh/adaptors/cgal.h> adds CGAL's
+// property-map tags.
+#pragma once
+
+#include <genmesh/concepts.h>
+#include <genmesh/detail/property_array.h>
+#include <genmesh/exceptions.h>
+#include <genmesh/point_traits.h>
+#include <genmesh/property_maps.h>
+
+#include <Eigen/Core>
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <cassert>
+#include <compare>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <iterator>
+#include <limits>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace genmesh {
+
+// ---------------------------------------------------------------------------
+// Index types
+// ---------------------------------------------------------------------------
+
+struct Vertex_tag {
+  static constexpr char prefix = 'v';
+};
+struct Halfedge_tag {
+  static constexpr char prefix = 'h';
+};
+struct Edge_tag {
+  static constexpr char prefix = 'e';
+};
+struct Face_tag {
+  static constexpr char prefix = 'f';
+};
+
+/// A typed 32-bit element index. Default-constructed = invalid (the null
+/// element); regular, trivially copyable, totally ordered, hashable.
+template <class Tag>
+class Mesh_index {
+public:
+  using size_type = std::uint32_t;
+  static constexpr size_type invalid_value = std::numeric_limits<size_type>::max();
+
+  constexpr Mesh_index() = default;
+  constexpr explicit Mesh_index(size_type i) : idx_(i) {}
+
+  /// The raw index (invalid_value for the null element).
+  [[nodiscard]] constexpr size_type idx() const { return idx_; }
+  [[nodiscard]] constexpr bool is_valid() const { return idx_ != invalid_value; }
+  /// The raw index as std::size_t (for CGAL-style `(std::size_t)v` code).
+  constexpr explicit operator std::size_t() const { return idx_; }
+
+  friend constexpr bool operator==(Mesh_index, Mesh_index) = default;
+  friend constexpr auto operator<=>(Mesh_index, Mesh_index) = default;
+
+  friend std::ostream& operator<<(std::ostream& os, Mesh_index i) {
+    os << Tag::prefix;
+    if (i.is_valid())
+      os << i.idx_;
+    else
+      os << "-null";
+    return os;
+  }
+  /// For boost::hash.
+  friend std::size_t hash_value(Mesh_index i) { return i.idx_; }
+
+private:
+  size_type idx_ = invalid_value;
+};
+
+using Vertex_index = Mesh_index<Vertex_tag>;
+using Halfedge_index = Mesh_index<Halfedge_tag>;
+using Face_index = Mesh_index<Face_tag>;
+
+/// An edge index that, like CGAL::Surface_mesh's, remembers the halfedge it
+/// was made from: halfedge(edge(h)) == h, and source/target of the edge are
+/// those of that halfedge (what Boost's out_edges needs). Equality, order and
+/// hash use idx() = halfedge / 2 only; Edge_index(i) holds halfedge 2i.
+/// Still 4 bytes and trivially copyable.
+template <>
+class Mesh_index<Edge_tag> {
+public:
+  using size_type = std::uint32_t;
+  static constexpr size_type invalid_value = std::numeric_limits<size_type>::max();
+
+  constexpr Mesh_index() = default;
+  constexpr explicit Mesh_index(size_type i) : h_(i == invalid_value ? invalid_value : 2 * i) {}
+  constexpr explicit Mesh_index(Halfedge_index h) : h_(h.idx()) {}
+
+  [[nodiscard]] constexpr size_type idx() const { return h_ == invalid_value ? invalid_value : h_ >> 1; }
+  [[nodiscard]] constexpr bool is_valid() const { return h_ != invalid_value; }
+  /// The halfedge this edge index was made from (2 idx() if made from an index).
+  [[nodiscard]] constexpr Halfedge_index halfedge() const { return Halfedge_index(h_); }
+  constexpr explicit operator std::size_t() const { return idx(); }
+
+  friend constexpr bool operator==(Mesh_index a, Mesh_index b) { return a.idx() == b.idx(); }
+  friend constexpr std::strong_ordering operator<=>(Mesh_index a, Mesh_index b) { return a.idx() <=> b.idx(); }
+
+  friend std::ostream& operator<<(std::ostream& os, Mesh_index e) {
+    os << 'e';
+    if (e.is_valid())
+      os << e.idx();
+    else
+      os << "-null";
+    return os;
+  }
+  friend std::size_t hash_value(Mesh_index e) { return e.idx(); }
+
+private:
+  size_type h_ = invalid_value;
+};
+
+using Edge_index = Mesh_index<Edge_tag>;
+
+template <class It>
+struct Range;
+
+} // namespace genmesh
+
+template <class It>
+struct std::tuple_size<genmesh::Range<It>> : std::integral_constant<std::size_t, 2> {};
+template <std::size_t I, class It>
+struct std::tuple_element<I, genmesh::Range<It>> {
+  using type = It;
+};
+
+template <class Tag>
+struct std::hash<genmesh::Mesh_index<Tag>> {
+  std::size_t operator()(genmesh::Mesh_index<Tag> i) const noexcept {
+    return std::hash<std::uint32_t>{}(i.idx());
+  }
+};
+
+namespace genmesh {
+
+/// Property handles: boost lvalue property maps indexed by element.
+template <class T>
+using Vertex_property = detail::Property_map<Vertex_index, T>;
+template <class T>
+using Halfedge_property = detail::Property_map<Halfedge_index, T>;
+template <class T>
+using Edge_property = detail::Property_map<Edge_index, T>;
+template <class T>
+using Face_property = detail::Property_map<Face_index, T>;
+
+/// How collect_garbage() renumbers the surviving elements.
+enum class Garbage_order {
+  stable,            ///< survivors keep their relative order (the default)
+  like_surface_mesh  ///< exactly CGAL::Surface_mesh's renumbering (swap from the back)
+};
+
+/// Old -> new indices made by collect_garbage(); removed elements map to the
+/// invalid index. Each vector is as long as the index bound before collection.
+struct Garbage_collection_maps {
+  std::vector<Vertex_index> vertices;
+  std::vector<Halfedge_index> halfedges;
+  std::vector<Edge_index> edges;
+  std::vector<Face_index> faces;
+};
+
+/// A range that is also a std::pair of iterators (CGAL::Iterator_range
+/// style: .first/.second, begin()/end(), size(), empty()). size() is O(1) for
+/// the element ranges (vertices(), faces(), ...), a walk for the ranges
+/// around a face or vertex.
+template <class It>
+struct Range : std::pair<It, It> {
+  using iterator = It;
+  using const_iterator = It;
+  Range() = default;
+  Range(It b, It e) : std::pair<It, It>(b, e) {}
+  Range(It b, It e, std::size_t n) : std::pair<It, It>(b, e), size_(n) {}
+  [[nodiscard]] It begin() const { return this->first; }
+  [[nodiscard]] It end() const { return this->second; }
+  [[nodiscard]] bool empty() const { return this->first == this->second; }
+  [[nodiscard]] std::size_t size() const {
+    if (size_ != unknown) return size_;
+    return static_cast<std::size_t>(std::distance(this->first, this->second));
+  }
+  /// For `auto [b, e] = range;`.
+  template <std::size_t I>
+  [[nodiscard]] It get() const {
+    static_assert(I < 2);
+    if constexpr (I == 0)
+      return this->first;
+    else
+      return this->second;
+  }
+
+private:
+  static constexpr std::size_t unknown = static_cast<std::size_t>(-1);
+  std::size_t size_ = unknown;
+};
+
+class Halfedge_connectivity;
+
+namespace detail {
+
+/// Iterates indices [i, end) skipping removed ones; removed flags are looked up
+/// at index >> Shift (halfedges use their edge's flag).
+template <class Index, unsigned Shift>
+class Index_iterator {
+public:
+  using value_type = Index;
+  using reference = Index;
+  using pointer = void;
+  using difference_type = std::ptrdiff_t;
+  using iterator_category = std::bidirectional_iterator_tag;
+  using iterator_concept = std::bidirectional_iterator_tag;
+
+  Index_iterator() = default;
+  Index_iterator(std::uint32_t i, std::uint32_t end, const std::vector<bool>* removed)
+      : i_(i), end_(end), removed_(removed) {
+    skip_forward();
+  }
+
+  Index operator*() const { return Index(i_); }
+  Index_iterator& operator++() {
+    ++i_;
+    skip_forward();
+    return *this;
+  }
+  Index_iterator operator++(int) {
+    Index_iterator t = *this;
+    ++*this;
+    return t;
+  }
+  Index_iterator& operator--() {
+    --i_;
+    if (removed_ != nullptr)
+      while (i_ > 0 && (*removed_)[i_ >> Shift]) --i_;
+    return *this;
+  }
+  Index_iterator operator--(int) {
+    Index_iterator t = *this;
+    --*this;
+    return t;
+  }
+  friend bool operator==(const Index_iterator& a, const Index_iterator& b) { return a.i_ == b.i_; }
+
+private:
+  void skip_forward() {
+    if (removed_ != nullptr)
+      while (i_ < end_ && (*removed_)[i_ >> Shift]) ++i_;
+  }
+  std::uint32_t i_ = 0;
+  std::uint32_t end_ = 0;
+  const std::vector<bool>* removed_ = nullptr;
+};
+
+/// Walks a halfedge cycle from an anchor (CGAL's iterator-over-circulator
+/// scheme: begin = (anchor, winding 0), end = (anchor, winding 1)).
+/// Step provides next(m, h) and value(m, h).
+template <class Step>
+class Cycle_iterator {
+public:
+  using value_type = typename Step::value_type;
+  using reference = value_type;
+  using pointer = void;
+  using difference_type = std::ptrdiff_t;
+  using iterator_category = std::forward_iterator_tag;
+  using iterator_concept = std::forward_iterator_tag;
+
+  Cycle_iterator() = default;
+  Cycle_iterator(const Halfedge_connectivity* m, Halfedge_index anchor, int winding)
+      : m_(m), pos_(anchor), anchor_(anchor), winding_(anchor.is_valid() ? winding : 1) {}
+
+  value_type operator*() const { return Step::value(*m_, pos_); }
+  Cycle_iterator& operator++() {
+    pos_ = Step::next(*m_, pos_);
+    if (pos_ == anchor_) ++winding_;
+    return *this;
+  }
+  Cycle_iterator operator++(int) {
+    Cycle_iterator t = *this;
+    ++*this;
+    return t;
+  }
+  friend bool operator==(const Cycle_iterator& a, const Cycle_iterator& b) {
+    return a.pos_ == b.pos_ && a.winding_ == b.winding_;
+  }
+
+private:
+  const Halfedge_connectivity* m_ = nullptr;
+  Halfedge_index pos_;
+  Halfedge_index anchor_;
+  int winding_ = 1;
+};
+
+// Steps are templates on the mesh so they can precede Halfedge_connectivity.
+struct Step_face {
+  using value_type = Halfedge_index;
+  template <class M>
+  static Halfedge_index next(const M& m, Halfedge_index h) { return m.next(h); }
+  template <class M>
+  static Halfedge_index value(const M&, Halfedge_index h) { return h; }
+};
+struct Step_face_vertex {
+  using value_type = Vertex_index;
+  template <class M>
+  static Halfedge_index next(const M& m, Halfedge_index h) { return m.next(h); }
+  template <class M>
+  static Vertex_index value(const M& m, Halfedge_index h) { return m.target(h); }
+};
+struct Step_target {
+  using value_type = Halfedge_index;
+  template <class M>
+  static Halfedge_index next(const M& m, Halfedge_index h) { return m.next_around_target(h); }
+  template <class M>
+  static Halfedge_index value(const M&, Halfedge_index h) { return h; }
+};
+struct Step_target_vertex {
+  using value_type = Vertex_index;
+  template <class M>
+  static Halfedge_index next(const M& m, Halfedge_index h) { return m.next_around_target(h); }
+  template <class M>
+  static Vertex_index value(const M& m, Halfedge_index h) { return m.source(h); }
+};
+struct Step_target_in_edge {
+  using value_type = Edge_index;
+  template <class M>
+  static Halfedge_index next(const M& m, Halfedge_index h) { return m.next_around_target(h); }
+  template <class M>
+  static Edge_index value(const M&, Halfedge_index h) { return Edge_index(h); }
+};
+struct Step_target_out_edge {
+  using value_type = Edge_index;
+  template <class M>
+  static Halfedge_index next(const M& m, Halfedge_index h) { return m.next_around_target(h); }
+  template <class M>
+  static Edge_index value(const M&, Halfedge_index h) { return Edge_index(Halfedge_index(h.idx() ^ 1u)); }
+};
+struct Step_target_face {
+  using value_type = Face_index;
+  template <class M>
+  static Halfedge_index next(const M& m, Halfedge_index h) { return m.next_around_target(h); }
+  template <class M>
+  static Face_index value(const M& m, Halfedge_index h) { return m.face(h); }
+};
+
+template <class P>
+P default_point() {
+  if constexpr (Point3<P>)
+    return Point_traits<P>::make(0.0, 0.0, 0.0);
+  else
+    return P{};
+}
+
+} // namespace detail
+
+using Vertex_iterator = detail::Index_iterator<Vertex_index, 0>;
+using Halfedge_iterator = detail::Index_iterator<Halfedge_index, 1>;
+using Edge_iterator = detail::Index_iterator<Edge_index, 0>;
+using Face_iterator = detail::Index_iterator<Face_index, 0>;
+
+using Halfedge_around_face_iterator = detail::Cycle_iterator<detail::Step_face>;
+using Vertex_around_face_iterator = detail::Cycle_iterator<detail::Step_face_vertex>;
+using Halfedge_around_target_iterator = detail::Cycle_iterator<detail::Step_target>;
+using Vertex_around_target_iterator = detail::Cycle_iterator<detail::Step_target_vertex>;
+using Face_around_target_iterator = detail::Cycle_iterator<detail::Step_target_face>;
+/// Edges e around a vertex v with target(e) == v (in) or source(e) == v (out).
+using In_edge_iterator = detail::Cycle_iterator<detail::Step_target_in_edge>;
+using Out_edge_iterator = detail::Cycle_iterator<detail::Step_target_out_edge>;
+
+// ---------------------------------------------------------------------------
+// Connectivity (everything but the point type)
+// ---------------------------------------------------------------------------
+
+/// The connectivity and properties of a Halfedge_mesh; the point type is added
+/// by Halfedge_mesh<Point>. Not used on its own.
+class Halfedge_connectivity {
+public:
+  using size_type = std::size_t;
+
+  template <class T>
+  using Vertex_property = genmesh::Vertex_property<T>;
+  template <class T>
+  using Halfedge_property = genmesh::Halfedge_property<T>;
+  template <class T>
+  using Edge_property = genmesh::Edge_property<T>;
+  template <class T>
+  using Face_property = genmesh::Face_property<T>;
+
+  static constexpr Vertex_index null_vertex() { return {}; }
+  static constexpr Halfedge_index null_halfedge() { return {}; }
+  static constexpr Edge_index null_edge() { return {}; }
+  static constexpr Face_index null_face() { return {}; }
+
+  // ---- counts -------------------------------------------------------------
+
+  /// Live (not removed) elements.
+  [[nodiscard]] size_type n_vertices() const { return vertices_size() - removed_vertices_; }
+  [[nodiscard]] size_type n_halfedges() const { return halfedges_size() - 2 * removed_edges_; }
+  [[nodiscard]] size_type n_edges() const { return edges_size() - removed_edges_; }
+  [[nodiscard]] size_type n_faces() const { return faces_size() - removed_faces_; }
+  [[nodiscard]] bool is_empty() const { return n_vertices() == 0; }
+  /// Surface_mesh's spellings of the live counts.
+  [[nodiscard]] size_type number_of_vertices() const { return n_vertices(); }
+  [[nodiscard]] size_type number_of_halfedges() const { return n_halfedges(); }
+  [[nodiscard]] size_type number_of_edges() const { return n_edges(); }
+  [[nodiscard]] size_type number_of_faces() const { return n_faces(); }
+
+  /// Index bounds: live plus removed, not yet collected, elements.
+  [[nodiscard]] size_type vertices_size() const { return vhalfedge_.size(); }
+  [[nodiscard]] size_type halfedges_size() const { return hnext_.size(); }
+  [[nodiscard]] size_type edges_size() const { return hnext_.size() / 2; }
+  [[nodiscard]] size_type faces_size() const { return fhalfedge_.size(); }
+
+  [[nodiscard]] size_type number_of_removed_vertices() const { return removed_vertices_; }
+  [[nodiscard]] size_type number_of_removed_halfedges() const { return 2 * removed_edges_; }
+  [[nodiscard]] size_type number_of_removed_edges() const { return removed_edges_; }
+  [[nodiscard]] size_type number_of_removed_faces() const { return removed_faces_; }
+
+  // ---- validity -----------------------------------------------------------
+
+  [[nodiscard]] bool is_removed(Vertex_index v) const { return vremoved_[v.idx()]; }
+  [[nodiscard]] bool is_removed(Halfedge_index h) const { return eremoved_[h.idx() >> 1]; }
+  [[nodiscard]] bool is_removed(Edge_index e) const { return eremoved_[e.idx()]; }
+  [[nodiscard]] bool is_removed(Face_index f) const { return fremoved_[f.idx()]; }
+
+  /// Index within the current bounds (removed or not), as CGAL's has_valid_index.
+  [[nodiscard]] bool has_valid_index(Vertex_index v) const { return v.idx() < vertices_size(); }
+  [[nodiscard]] bool has_valid_index(Halfedge_index h) const { return h.idx() < halfedges_size(); }
+  [[nodiscard]] bool has_valid_index(Edge_index e) const { return e.idx() < edges_size(); }
+  [[nodiscard]] bool has_valid_index(Face_index f) const { return f.idx() < faces_size(); }
+
+  /// Within bounds and not removed.
+  [[nodiscard]] bool is_valid(Vertex_index v) const { return has_valid_index(v) && !is_removed(v); }
+  [[nodiscard]] bool is_valid(Halfedge_index h) const { return has_valid_index(h) && !is_removed(h); }
+  [[nodiscard]] bool is_valid(Edge_index e) const { return has_valid_index(e) && !is_removed(e); }
+  [[nodiscard]] bool is_valid(Face_index f) const { return has_valid_index(f) && !is_removed(f); }
+
+  // ---- connectivity -------------------------------------------------------
+
+  [[nodiscard]] Halfedge_index next(Halfedge_index h) const { return hnext_[h.idx()]; }
+  [[nodiscard]] Halfedge_index prev(Halfedge_index h) const { return hprev_[h.idx()]; }
+  [[nodiscard]] Vertex_index target(Halfedge_index h) const { return htarget_[h.idx()]; }
+  [[nodiscard]] Vertex_index source(Halfedge_index h) const { return htarget_[h.idx() ^ 1u]; }
+  [[nodiscard]] Face_index face(Halfedge_index h) const { return hface_[h.idx()]; }
+  [[nodiscard]] static constexpr Halfedge_index opposite(Halfedge_index h) {
+    return Halfedge_index(h.idx() ^ 1u);
+  }
+  /// The edge of h, remembering h (see Edge_index).
+  [[nodiscard]] static constexpr Edge_index edge(Halfedge_index h) { return Edge_index(h); }
+  /// The halfedge e was made from: h for edge(h), 2e for Edge_index(e) and
+  /// for the edges of edges() (as Surface_mesh).
+  [[nodiscard]] static constexpr Halfedge_index halfedge(Edge_index e) { return e.halfedge(); }
+  /// Halfedge i (0 or 1) of e: 2e + i.
+  [[nodiscard]] static constexpr Halfedge_index halfedge(Edge_index e, unsigned i) {
+    return Halfedge_index((e.idx() << 1) + i);
+  }
+  /// Vertex i (0 or 1) of e: target(halfedge(e, i)).
+  [[nodiscard]] Vertex_index vertex(Edge_index e, unsigned i) const { return target(halfedge(e, i)); }
+  /// A halfedge with target v; null if v is isolated.
+  [[nodiscard]] Halfedge_index halfedge(Vertex_index v) const { return vhalfedge_[v.idx()]; }
+  [[nodiscard]] Halfedge_index halfedge(Face_index f) const { return fhalfedge_[f.idx()]; }
+  /// The halfedge from u to v, or null (searches around v).
+  [[nodiscard]] Halfedge_index halfedge(Vertex_index u, Vertex_index v) const {
+    const Halfedge_index start = halfedge(v);
+    if (!start.is_valid()) return {};
+    Halfedge_index h = start;
+    do {
+      if (source(h) == u) return h;
+      h = next_around_target(h);
+    } while (h != start);
+    return {};
+  }
+
+  /// opposite(next(h)): the next halfedge clockwise around target(h).
+  [[nodiscard]] Halfedge_index next_around_target(Halfedge_index h) const { return opposite(next(h)); }
+  /// prev(opposite(h)).
+  [[nodiscard]] Halfedge_index prev_around_target(Halfedge_index h) const { return prev(opposite(h)); }
+  /// next(opposite(h)).
+  [[nodiscard]] Halfedge_index next_around_source(Halfedge_index h) const { return next(opposite(h)); }
+  /// opposite(prev(h)).
+  [[nodiscard]] Halfedge_index prev_around_source(Halfedge_index h) const { return opposite(prev(h)); }
+
+  /// next(h) = nh and, if nh is not null, prev(nh) = h (as Surface_mesh).
+  void set_next(Halfedge_index h, Halfedge_index nh) {
+    hnext_[h.idx()] = nh;
+    if (nh.is_valid()) hprev_[nh.idx()] = h;
+  }
+  void set_next_only(Halfedge_index h, Halfedge_index nh) { hnext_[h.idx()] = nh; }
+  void set_prev_only(Halfedge_index h, Halfedge_index ph) {
+    if (h.is_valid()) hprev_[h.idx()] = ph;
+  }
+  void set_target(Halfedge_index h, Vertex_index v) { htarget_[h.idx()] = v; }
+  void set_face(Halfedge_index h, Face_index f) { hface_[h.idx()] = f; }
+  void set_halfedge(Vertex_index v, Halfedge_index h) { vhalfedge_[v.idx()] = h; }
+  void set_halfedge(Face_index f, Halfedge_index h) { fhalfedge_[f.idx()] = h; }
+
+  // ---- borders and degrees ------------------------------------------------
+
+  /// face(h) is null.
+  [[nodiscard]] bool is_border(Halfedge_index h) const { return !face(h).is_valid(); }
+  /// Either halfedge of e is a border halfedge.
+  [[nodiscard]] bool is_border(Edge_index e) const {
+    return is_border(halfedge(e, 0)) || is_border(halfedge(e, 1));
+  }
+  /// v is isolated or incident to a border halfedge. With check_all = false,
+  /// only halfedge(v) is looked at (O(1) if border vertices keep a border
+  /// halfedge, as Surface_mesh's flag does).
+  [[nodiscard]] bool is_border(Vertex_index v, bool check_all = true) const {
+    const Halfedge_index start = halfedge(v);
+    if (!start.is_valid()) return true;
+    if (!check_all) return is_border(start);
+    Halfedge_index h = start;
+    do {
+      if (is_border(h)) return true;
+      h = next_around_target(h);
+    } while (h != start);
+    return false;
+  }
+  [[nodiscard]] bool is_isolated(Vertex_index v) const { return !halfedge(v).is_valid(); }
+
+  /// Number of halfedges targeting v (0 if isolated).
+  [[nodiscard]] size_type degree(Vertex_index v) const {
+    const Halfedge_index start = halfedge(v);
+    if (!start.is_valid()) return 0;
+    size_type n = 0;
+    Halfedge_index h = start;
+    do {
+      ++n;
+      h = next_around_target(h);
+    } while (h != start);
+    return n;
+  }
+  /// Number of halfedges around f (0 if f has no halfedge).
+  [[nodiscard]] size_type degree(Face_index f) const {
+    const Halfedge_index start = halfedge(f);
+    if (!start.is_valid()) return 0;
+    size_type n = 0;
+    Halfedge_index h = start;
+    do {
+      ++n;
+      h = next(h);
+    } while (h != start);
+    return n;
+  }
+
+  // ---- adding and removing ------------------------------------------------
+
+  /// A new isolated vertex (recycled if possible); its properties have their defaults.
+  Vertex_index add_vertex() {
+    if (recycle_ && vertices_freelist_ != invalid) {
+      const std::uint32_t i = vertices_freelist_;
+      vertices_freelist_ = vhalfedge_[i].idx();
+      --removed_vertices_;
+      vremoved_[i] = false;
+      vhalfedge_[i] = Halfedge_index();
+      vprops_.reset(i);
+      return Vertex_index(i);
+    }
+    check_room(vhalfedge_.size());
+    vhalfedge_.push_back(Halfedge_index());
+    vremoved_.push_back(false);
+    vprops_.push_back();
+    return Vertex_index(static_cast<std::uint32_t>(vhalfedge_.size() - 1));
+  }
+
+  /// A new edge (recycled if possible) with null connectivity; returns its
+  /// halfedge 0 (2e).
+  Halfedge_index add_edge() {
+    if (recycle_ && edges_freelist_ != invalid) {
+      const std::uint32_t h = edges_freelist_;
+      edges_freelist_ = hnext_[h].idx();
+      --removed_edges_;
+      eremoved_[h >> 1] = false;
+      for (std::uint32_t k : {h, h ^ 1u}) {
+        hnext_[k] = hprev_[k] = Halfedge_index();
+        htarget_[k] = Vertex_index();
+        hface_[k] = Face_index();
+        hprops_.reset(k);
+      }
+      eprops_.reset(h >> 1);
+      return Halfedge_index(h);
+    }
+    check_room(hnext_.size() + 1);
+    for (int k = 0; k < 2; ++k) {
+      hnext_.emplace_back();
+      hprev_.emplace_back();
+      htarget_.emplace_back();
+      hface_.emplace_back();
+      hprops_.push_back();
+    }
+    eremoved_.push_back(false);
+    eprops_.push_back();
+    return Halfedge_index(static_cast<std::uint32_t>(hnext_.size() - 2));
+  }
+
+  /// A new edge from v0 to v1: returns the halfedge targeting v1 (its opposite
+  /// targets v0). halfedge(v0)/halfedge(v1) are not changed.
+  Halfedge_index add_edge(Vertex_index v0, Vertex_index v1) {
+    const Halfedge_index h = add_edge();
+    set_target(h, v1);
+    set_target(opposite(h), v0);
+    return h;
+  }
+
+  /// A new face (recycled if possible) with no halfedge.
+  Face_index add_face() {
+    if (recycle_ && faces_freelist_ != invalid) {
+      const std::uint32_t i = faces_freelist_;
+      faces_freelist_ = fhalfedge_[i].idx();
+      --removed_faces_;
+      fremoved_[i] = false;
+      fhalfedge_[i] = Halfedge_index();
+      fprops_.reset(i);
+      return Face_index(i);
+    }
+    check_room(fhalfedge_.size());
+    fhalfedge_.push_back(Halfedge_index());
+    fremoved_.push_back(false);
+    fprops_.push_back();
+    return Face_index(static_cast<std::uint32_t>(fhalfedge_.size() - 1));
+  }
+
+  /// Marks v removed and frees its index; adjusts nothing else. Removing an
+  /// element twice is a precondition violation (asserted in debug builds).
+  void remove_vertex(Vertex_index v) {
+    assert(!vremoved_[v.idx()] && "removed twice");
+    vremoved_[v.idx()] = true;
+    ++removed_vertices_;
+    garbage_ = true;
+    vhalfedge_[v.idx()] = Halfedge_index(vertices_freelist_);
+    vertices_freelist_ = v.idx();
+  }
+  /// Marks e (both halfedges) removed and frees its index; adjusts nothing else.
+  void remove_edge(Edge_index e) {
+    assert(!eremoved_[e.idx()] && "removed twice");
+    eremoved_[e.idx()] = true;
+    ++removed_edges_;
+    garbage_ = true;
+    hnext_[e.idx() << 1] = Halfedge_index(edges_freelist_);
+    edges_freelist_ = e.idx() << 1;
+  }
+  /// Marks f removed and frees its index; adjusts nothing else.
+  void remove_face(Face_index f) {
+    assert(!fremoved_[f.idx()] && "removed twice");
+    fremoved_[f.idx()] = true;
+    ++removed_faces_;
+    garbage_ = true;
+    fhalfedge_[f.idx()] = Halfedge_index(faces_freelist_);
+    faces_freelist_ = f.idx();
+  }
+
+  /// Some element was removed since the last collect_garbage() (stays true
+  /// when removed indices were recycled, as in Surface_mesh).
+  [[nodiscard]] bool has_garbage() const { return garbage_; }
+  /// Whether add_* reuses removed indices (default true).
+  void set_recycle_garbage(bool b) { recycle_ = b; }
+  [[nodiscard]] bool does_recycle_garbage() const { return recycle_; }
+
+  /// Drops removed elements, updates connectivity and compacts every
+  /// property; returns the old -> new maps (identity if there was no
+  /// garbage). Links to removed elements become null. Shrinks storage to fit,
+  /// as Surface_mesh does. With Garbage_order::stable (the default) survivors
+  /// keep their relative order; with Garbage_order::like_surface_mesh they are
+  /// renumbered exactly as CGAL::Surface_mesh::collect_garbage() does (the
+  /// last live element fills the first hole, repeatedly).
+  Garbage_collection_maps collect_garbage(Garbage_order order = Garbage_order::stable) {
+    const std::uint32_t nv = static_cast<std::uint32_t>(vertices_size());
+    const std::uint32_t ne = static_cast<std::uint32_t>(edges_size());
+    const std::uint32_t nf = static_cast<std::uint32_t>(faces_size());
+    std::vector<std::uint32_t> hmap(2 * std::size_t(ne));
+    const std::vector<std::uint32_t> vmap = compaction_map(vremoved_, order);
+    const std::vector<std::uint32_t> emap = compaction_map(eremoved_, order);
+    const std::vector<std::uint32_t> fmap = compaction_map(fremoved_, order);
+    auto kept = [](const std::vector<std::uint32_t>& map) {
+      return static_cast<std::uint32_t>(std::ranges::count_if(map, [](std::uint32_t i) { return i != invalid; }));
+    };
+    const std::uint32_t kv = kept(vmap), ke = kept(emap), kf = kept(fmap);
+    for (std::uint32_t i = 0; i < ne; ++i) {
+      hmap[2 * i] = emap[i] == invalid ? invalid : 2 * emap[i];
+      hmap[2 * i + 1] = emap[i] == invalid ? invalid : 2 * emap[i] + 1;
+    }
+
+    if (garbage_) {
+      auto map_h = [&](Halfedge_index h) {
+        return h.is_valid() && h.idx() < hmap.size() ? Halfedge_index(hmap[h.idx()]) : Halfedge_index();
+      };
+      auto map_v = [&](Vertex_index v) {
+        return v.is_valid() && v.idx() < nv ? Vertex_index(vmap[v.idx()]) : Vertex_index();
+      };
+      auto map_f = [&](Face_index f) {
+        return f.is_valid() && f.idx() < nf ? Face_index(fmap[f.idx()]) : Face_index();
+      };
+      // Every destination is the source itself or a removed slot (whose old
+      // content is never read), so moving in place in any order is safe.
+      for (std::uint32_t i = 0; i < nv; ++i)
+        if (vmap[i] != invalid) vhalfedge_[vmap[i]] = map_h(vhalfedge_[i]);
+      for (std::uint32_t i = 0; i < 2 * ne; ++i) {
+        if (hmap[i] == invalid) continue;
+        const std::uint32_t j = hmap[i];
+        hnext_[j] = map_h(hnext_[i]);
+        hprev_[j] = map_h(hprev_[i]);
+        htarget_[j] = map_v(htarget_[i]);
+        hface_[j] = map_f(hface_[i]);
+      }
+      for (std::uint32_t i = 0; i < nf; ++i)
+        if (fmap[i] != invalid) fhalfedge_[fmap[i]] = map_h(fhalfedge_[i]);
+
+      vhalfedge_.resize(kv);
+      hnext_.resize(2 * std::size_t(ke));
+      hprev_.resize(2 * std::size_t(ke));
+      htarget_.resize(2 * std::size_t(ke));
+      hface_.resize(2 * std::size_t(ke));
+      fhalfedge_.resize(kf);
+      vremoved_.assign(kv, false);
+      eremoved_.assign(ke, false);
+      fremoved_.assign(kf, false);
+      vprops_.compact(vmap, kv);
+      hprops_.compact(hmap, 2 * std::size_t(ke));
+      eprops_.compact(emap, ke);
+      fprops_.compact(fmap, kf);
+      shrink_to_fit();
+
+      removed_vertices_ = removed_edges_ = removed_faces_ = 0;
+      vertices_freelist_ = edges_freelist_ = faces_freelist_ = invalid;
+      garbage_ = false;
+    }
+
+    Garbage_collection_maps maps;
+    maps.vertices.reserve(nv);
+    for (auto i : vmap) maps.vertices.emplace_back(i);
+    maps.halfedges.reserve(hmap.size());
+    for (auto i : hmap) maps.halfedges.emplace_back(i);
+    maps.edges.reserve(ne);
+    for (auto i : emap) maps.edges.emplace_back(i);
+    maps.faces.reserve(nf);
+    for (auto i : fmap) maps.faces.emplace_back(i);
+    return maps;
+  }
+
+  /// Capacity for nv vertices, ne edges (2 ne halfedges) and nf faces, in
+  /// connectivity and every property.
+  void reserve(size_type nv, size_type ne, size_type nf) {
+    vhalfedge_.reserve(nv);
+    vremoved_.reserve(nv);
+    vprops_.reserve(nv);
+    for (auto* a : {&hnext_, &hprev_}) a->reserve(2 * ne);
+    htarget_.reserve(2 * ne);
+    hface_.reserve(2 * ne);
+    hprops_.reserve(2 * ne);
+    eremoved_.reserve(ne);
+    eprops_.reserve(ne);
+    fhalfedge_.reserve(nf);
+    fremoved_.reserve(nf);
+    fprops_.reserve(nf);
+  }
+
+  /// Releases unused capacity of every array.
+  void shrink_to_fit() {
+    vhalfedge_.shrink_to_fit();
+    hnext_.shrink_to_fit();
+    hprev_.shrink_to_fit();
+    htarget_.shrink_to_fit();
+    hface_.shrink_to_fit();
+    fhalfedge_.shrink_to_fit();
+    vremoved_.shrink_to_fit();
+    eremoved_.shrink_to_fit();
+    fremoved_.shrink_to_fit();
+    vprops_.shrink_to_fit();
+    hprops_.shrink_to_fit();
+    eprops_.shrink_to_fit();
+    fprops_.shrink_to_fit();
+  }
+
+  /// Bytes held by all arrays (capacities: connectivity, removed bits, every
+  /// property including the points); excludes the fixed-size object itself.
+  [[nodiscard]] size_type memory_bytes() const {
+    auto bits = [](const std::vector<bool>& b) { return (b.capacity() + 7) / 8; };
+    return sizeof(Halfedge_index) *
+               (vhalfedge_.capacity() + hnext_.capacity() + hprev_.capacity() + fhalfedge_.capacity()) +
+           sizeof(Vertex_index) * htarget_.capacity() + sizeof(Face_index) * hface_.capacity() +
+           bits(vremoved_) + bits(eremoved_) + bits(fremoved_) + vprops_.memory_bytes() +
+           hprops_.memory_bytes() + eprops_.memory_bytes() + fprops_.memory_bytes();
+  }
+
+  // ---- ranges -------------------------------------------------------------
+
+  /// Live vertices by increasing index (also halfedges(), edges(), faces()).
+  [[nodiscard]] Range<Vertex_iterator> vertices() const {
+    const auto n = static_cast<std::uint32_t>(vertices_size());
+    const std::vector<bool>* r = garbage_ ? &vremoved_ : nullptr;
+    return {Vertex_iterator(0, n, r), Vertex_iterator(n, n, r), n_vertices()};
+  }
+  [[nodiscard]] Range<Halfedge_iterator> halfedges() const {
+    const auto n = static_cast<std::uint32_t>(halfedges_size());
+    const std::vector<bool>* r = garbage_ ? &eremoved_ : nullptr;
+    return {Halfedge_iterator(0, n, r), Halfedge_iterator(n, n, r), n_halfedges()};
+  }
+  [[nodiscard]] Range<Edge_iterator> edges() const {
+    const auto n = static_cast<std::uint32_t>(edges_size());
+    const std::vector<bool>* r = garbage_ ? &eremoved_ : nullptr;
+    return {Edge_iterator(0, n, r), Edge_iterator(n, n, r), n_edges()};
+  }
+  [[nodiscard]] Range<Face_iterator> faces() const {
+    const auto n = static_cast<std::uint32_t>(faces_size());
+    const std::vector<bool>* r = garbage_ ? &fremoved_ : nullptr;
+    return {Face_iterator(0, n, r), Face_iterator(n, n, r), n_faces()};
+  }
+
+  /// h, next(h), next(next(h)), ... once around the cycle (empty for null h).
+  [[nodiscard]] Range<Halfedge_around_face_iterator> halfedges_around_face(Halfedge_index h) const {
+    return {{this, h, 0}, {this, h, 1}};
+  }
+  [[nodiscard]] Range<Halfedge_around_face_iterator> halfedges_around_face(Face_index f) const {
+    return halfedges_around_face(halfedge(f));
+  }
+  /// target of each halfedge of halfedges_around_face(h).
+  [[nodiscard]] Range<Vertex_around_face_iterator> vertices_around_face(Halfedge_index h) const {
+    return {{this, h, 0}, {this, h, 1}};
+  }
+  [[nodiscard]] Range<Vertex_around_face_iterator> vertices_around_face(Face_index f) const {
+    return vertices_around_face(halfedge(f));
+  }
+  /// h, opposite(next(h)), ...: every halfedge targeting target(h), clockwise.
+  [[nodiscard]] Range<Halfedge_around_target_iterator> halfedges_around_target(Halfedge_index h) const {
+    return {{this, h, 0}, {this, h, 1}};
+  }
+  [[nodiscard]] Range<Halfedge_around_target_iterator> halfedges_around_target(Vertex_index v) const {
+    return halfedges_around_target(halfedge(v));
+  }
+  /// source of each halfedge of halfedges_around_target(h): the neighbours.
+  [[nodiscard]] Range<Vertex_around_target_iterator> vertices_around_target(Halfedge_index h) const {
+    return {{this, h, 0}, {this, h, 1}};
+  }
+  [[nodiscard]] Range<Vertex_around_target_iterator> vertices_around_target(Vertex_index v) const {
+    return vertices_around_target(halfedge(v));
+  }
+  /// face of each halfedge of halfedges_around_target(h). As in CGAL, border
+  /// halfedges give null_face() (not skipped), and a face may repeat on a
+  /// non-manifold configuration.
+  [[nodiscard]] Range<Face_around_target_iterator> faces_around_target(Halfedge_index h) const {
+    return {{this, h, 0}, {this, h, 1}};
+  }
+  [[nodiscard]] Range<Face_around_target_iterator> faces_around_target(Vertex_index v) const {
+    return faces_around_target(halfedge(v));
+  }
+  /// The edges targeting v, each oriented towards v (Boost in_edges).
+  [[nodiscard]] Range<In_edge_iterator> in_edges(Vertex_index v) const {
+    return {{this, halfedge(v), 0}, {this, halfedge(v), 1}};
+  }
+  /// The edges leaving v, each oriented away from v (Boost out_edges).
+  [[nodiscard]] Range<Out_edge_iterator> out_edges(Vertex_index v) const {
+    return {{this, halfedge(v), 0}, {this, halfedge(v), 1}};
+  }
+
+  // ---- properties ---------------------------------------------------------
+
+  /// Adds a property of element Key (Vertex_index, Halfedge_index, Edge_index
+  /// or Face_index) and value T, every element set to default_value. An empty
+  /// name makes it anonymous. Throws invalid_input if the name is taken.
+  template <class Key, class T>
+  detail::Property_map<Key, T> add_property(std::string name, T default_value = T()) {
+    auto m = container<Key>().add(name, std::move(default_value));
+    if (!m) throw invalid_input("Halfedge_mesh: property \"" + name + "\" already exists");
+    return m;
+  }
+  /// The property of that name and type, if any.
+  template <class Key, class T>
+  [[nodiscard]] std::optional<detail::Property_map<Key, T>> get_property(std::string_view name) const {
+    return container<Key>().template get<T>(name);
+  }
+  /// The property of that name and type, added with default_value if missing.
+  /// Throws invalid_input if the name is taken by another value type.
+  template <class Key, class T>
+  detail::Property_map<Key, T> property(std::string name, T default_value = T()) {
+    if (auto m = get_property<Key, T>(name)) return *m;
+    return add_property<Key, T>(std::move(name), std::move(default_value));
+  }
+  template <class Key>
+  [[nodiscard]] bool has_property(std::string_view name) const {
+    return container<Key>().exists(name);
+  }
+  /// Removes the property and nulls the handle; false if it was not here.
+  template <class Key, class T>
+  bool remove_property(detail::Property_map<Key, T>& m) {
+    if (!m) return false;
+    if constexpr (std::is_same_v<Key, Vertex_index>)
+      if (m.name() == "v:point") return false; // the positions stay
+    return container<Key>().remove(m);
+  }
+  template <class Key>
+  [[nodiscard]] std::vector<std::string> property_names() const {
+    return container<Key>().names();
+  }
+
+  // pmp-style spellings.
+  template <class T>
+  Vertex_property<T> add_vertex_property(std::string name, T def = T()) {
+    return add_property<Vertex_index, T>(std::move(name), std::move(def));
+  }
+  template <class T>
+  Halfedge_property<T> add_halfedge_property(std::string name, T def = T()) {
+    return add_property<Halfedge_index, T>(std::move(name), std::move(def));
+  }
+  template <class T>
+  Edge_property<T> add_edge_property(std::string name, T def = T()) {
+    return add_property<Edge_index, T>(std::move(name), std::move(def));
+  }
+  template <class T>
+  Face_property<T> add_face_property(std::string name, T def = T()) {
+    return add_property<Face_index, T>(std::move(name), std::move(def));
+  }
+  template <class T>
+  [[nodiscard]] std::optional<Vertex_property<T>> get_vertex_property(std::string_view name) const {
+    return get_property<Vertex_index, T>(name);
+  }
+  template <class T>
+  [[nodiscard]] std::optional<Halfedge_property<T>> get_halfedge_property(std::string_view name) const {
+    return get_property<Halfedge_index, T>(name);
+  }
+  template <class T>
+  [[nodiscard]] std::optional<Edge_property<T>> get_edge_property(std::string_view name) const {
+    return get_property<Edge_index, T>(name);
+  }
+  template <class T>
+  [[nodiscard]] std::optional<Face_property<T>> get_face_property(std::string_view name) const {
+    return get_property<Face_index, T>(name);
+  }
+  template <class T>
+  Vertex_property<T> vertex_property(std::string name, T def = T()) {
+    return property<Vertex_index, T>(std::move(name), std::move(def));
+  }
+  template <class T>
+  Halfedge_property<T> halfedge_property(std::string name, T def = T()) {
+    return property<Halfedge_index, T>(std::move(name), std::move(def));
+  }
+  template <class T>
+  Edge_property<T> edge_property(std::string name, T def = T()) {
+    return property<Edge_index, T>(std::move(name), std::move(def));
+  }
+  template <class T>
+  Face_property<T> face_property(std::string name, T def = T()) {
+    return property<Face_index, T>(std::move(name), std::move(def));
+  }
+  [[nodiscard]] bool has_vertex_property(std::string_view name) const { return has_property<Vertex_index>(name); }
+  [[nodiscard]] bool has_halfedge_property(std::string_view name) const {
+    return has_property<Halfedge_index>(name);
+  }
+  [[nodiscard]] bool has_edge_property(std::string_view name) const { return has_property<Edge_index>(name); }
+  [[nodiscard]] bool has_face_property(std::string_view name) const { return has_property<Face_index>(name); }
+  template <class T>
+  bool remove_vertex_property(Vertex_property<T>& m) {
+    return remove_property(m);
+  }
+  template <class T>
+  bool remove_halfedge_property(Halfedge_property<T>& m) {
+    return remove_property(m);
+  }
+  template <class T>
+  bool remove_edge_property(Edge_property<T>& m) {
+    return remove_property(m);
+  }
+  template <class T>
+  bool remove_face_property(Face_property<T>& m) {
+    return remove_property(m);
+  }
+
+protected:
+  static constexpr std::uint32_t invalid = Vertex_index::invalid_value;
+
+  Halfedge_connectivity() = default;
+
+  /// Back to empty, every property removed (the derived mesh re-adds points).
+  void clear_connectivity() {
+    *this = Halfedge_connectivity();
+  }
+
+  template <class Key>
+  detail::Property_container<Key>& container() {
+    if constexpr (std::is_same_v<Key, Vertex_index>)
+      return vprops_;
+    else if constexpr (std::is_same_v<Key, Halfedge_index>)
+      return hprops_;
+    else if constexpr (std::is_same_v<Key, Edge_index>)
+      return eprops_;
+    else {
+      static_assert(std::is_same_v<Key, Face_index>, "Key must be a Halfedge_mesh index type");
+      return fprops_;
+    }
+  }
+  template <class Key>
+  const detail::Property_container<Key>& container() const {
+    return const_cast<Halfedge_connectivity*>(this)->container<Key>();
+  }
+
+  /// Old -> new indices for one element kind (see collect_garbage).
+  static std::vector<std::uint32_t> compaction_map(const std::vector<bool>& removed, Garbage_order order) {
+    const std::size_t n = removed.size();
+    std::vector<std::uint32_t> map(n);
+    if (order == Garbage_order::stable) {
+      std::uint32_t k = 0;
+      for (std::size_t i = 0; i < n; ++i) map[i] = removed[i] ? invalid : k++;
+      return map;
+    }
+    // Surface_mesh's two-finger swap: i0 finds holes from the front, i1 live
+    // elements from the back; i1 moves to i0.
+    for (std::size_t i = 0; i < n; ++i) map[i] = removed[i] ? invalid : static_cast<std::uint32_t>(i);
+    if (n == 0) return map;
+    std::vector<bool> r = removed;
+    std::size_t i0 = 0, i1 = n - 1;
+    while (true) {
+      while (!r[i0] && i0 < i1) ++i0;
+      while (r[i1] && i0 < i1) --i1;
+      if (i0 >= i1) break;
+      map[i1] = static_cast<std::uint32_t>(i0);
+      r[i0] = false;
+      r[i1] = true;
+    }
+    return map;
+  }
+
+  static void check_room(std::size_t size) {
+    // Two indices per edge must stay below the null value.
+    if (size + 2 >= std::size_t(invalid)) throw invalid_input("Halfedge_mesh: more than 2^32-2 elements");
+  }
+
+  std::vector<Halfedge_index> hnext_, hprev_;
+  std::vector<Vertex_index> htarget_;
+  std::vector<Face_index> hface_;
+  std::vector<Halfedge_index> vhalfedge_;
+  std::vector<Halfedge_index> fhalfedge_;
+  std::vector<bool> vremoved_, eremoved_, fremoved_;
+  detail::Property_container<Vertex_index> vprops_;
+  detail::Property_container<Halfedge_index> hprops_;
+  detail::Property_container<Edge_index> eprops_;
+  detail::Property_container<Face_index> fprops_;
+  std::size_t removed_vertices_ = 0, removed_edges_ = 0, removed_faces_ = 0;
+  std::uint32_t vertices_freelist_ = invalid, edges_freelist_ = invalid, faces_freelist_ = invalid;
+  bool garbage_ = false;
+  bool recycle_ = true;
+};
+
+
+// ---------------------------------------------------------------------------
+// Halfedge_mesh<Point>
+// ---------------------------------------------------------------------------
+
+/// genmesh's own halfedge mesh; see the top of this header for the layout and
+/// the guarantees. Point is any copyable type (Eigen::Vector3d by default);
+/// genmesh algorithms need Point_traits<Point> (point_traits.h), CGAL's need
+/// a CGAL point (Halfedge_mesh<K::Point_3>, see <genmesh/adaptors/cgal.h>).
+///
+/// Copies are deep (properties included). A property handle belongs to the
+/// mesh it came from: after a copy, look the property up by name in the copy.
+/// Handles give mutable access even when obtained from a const mesh, as in
+/// CGAL and pmp.
+template <class P = Eigen::Vector3d>
+class Halfedge_mesh : public Halfedge_connectivity {
+public:
+  using Point = P;
+
+  Halfedge_mesh() { points_ = vprops_.add<P>("v:point", detail::default_point<P>()); }
+  Halfedge_mesh(const Halfedge_mesh& o) : Halfedge_connectivity(o) { rebind_points(); }
+  Halfedge_mesh(Halfedge_mesh&& o) noexcept : Halfedge_connectivity(std::move(o)), points_(o.points_) {
+    o.reset_after_move();
+  }
+  Halfedge_mesh& operator=(const Halfedge_mesh& o) {
+    if (this != &o) {
+      Halfedge_connectivity::operator=(o);
+      rebind_points();
+    }
+    return *this;
+  }
+  Halfedge_mesh& operator=(Halfedge_mesh&& o) noexcept {
+    if (this != &o) {
+      Halfedge_connectivity::operator=(std::move(o));
+      points_ = o.points_;
+      o.reset_after_move();
+    }
+    return *this;
+  }
+  ~Halfedge_mesh() = default;
+
+  using Halfedge_connectivity::add_vertex;
+  /// A new isolated vertex at p.
+  Vertex_index add_vertex(const Point& p) {
+    const Vertex_index v = add_vertex();
+    points_[v] = p;
+    return v;
+  }
+
+  Point& point(Vertex_index v) { return points_[v]; }
+  const Point& point(Vertex_index v) const { return points_[v]; }
+  /// The positions, as a vertex property (a boost lvalue property map).
+  [[nodiscard]] Vertex_property<Point> points() const { return points_; }
+
+  /// Back to a new, empty mesh: every element and every property but the
+  /// positions is gone; recycling is on again.
+  void clear() {
+    clear_connectivity();
+    points_ = vprops_.add<P>("v:point", detail::default_point<P>());
+  }
+
+private:
+  void rebind_points() { points_ = *vprops_.template get<P>("v:point"); }
+  void reset_after_move() {
+    clear_connectivity();
+    points_ = vprops_.add<P>("v:point", detail::default_point<P>());
+  }
+
+  Vertex_property<Point> points_;
+};
+
+// ---------------------------------------------------------------------------
+// Property maps for algorithms
+// ---------------------------------------------------------------------------
+
+/// A readable property map element -> its raw index as std::size_t.
+template <class Key>
+struct Index_map : boost::put_get_helper<std::size_t, Index_map<Key>> {
+  using key_type = Key;
+  using value_type = std::size_t;
+  using reference = std::size_t;
+  using category = boost::readable_property_map_tag;
+  std::size_t operator[](Key k) const { return k.idx(); }
+};
+
+template <class P>
+Vertex_property<P> get(vertex_point_t, const Halfedge_mesh<P>& m) {
+  return m.points();
+}
+template <class P>
+Index_map<Vertex_index> get(vertex_index_t, const Halfedge_mesh<P>&) {
+  return {};
+}
+template <class P>
+Index_map<Halfedge_index> get(halfedge_index_t, const Halfedge_mesh<P>&) {
+  return {};
+}
+template <class P>
+Index_map<Edge_index> get(edge_index_t, const Halfedge_mesh<P>&) {
+  return {};
+}
+template <class P>
+Index_map<Face_index> get(face_index_t, const Halfedge_mesh<P>&) {
+  return {};
+}
+template <class P>
+std::size_t index_bound(vertex_index_t, const Halfedge_mesh<P>& m) {
+  return m.vertices_size();
+}
+template <class P>
+std::size_t index_bound(halfedge_index_t, const Halfedge_mesh<P>& m) {
+  return m.halfedges_size();
+}
+template <class P>
+std::size_t index_bound(edge_index_t, const Halfedge_mesh<P>& m) {
+  return m.edges_size();
+}
+template <class P>
+std::size_t index_bound(face_index_t, const Halfedge_mesh<P>& m) {
+  return m.faces_size();
+}
+
+// ---------------------------------------------------------------------------
+// Scoped (RAII) properties
+// ---------------------------------------------------------------------------
+
+/// An anonymous property that is removed when this object is destroyed.
+/// Move-only; map() is a copyable handle to pass to algorithms (valid while
+/// this object lives).
+template <class Key, class T>
+class Scoped_property {
+public:
+  Scoped_property(Halfedge_connectivity& m, T default_value = T())
+      : mesh_(&m), map_(m.add_property<Key, T>("", std::move(default_value))) {}
+  Scoped_property(const Scoped_property&) = delete;
+  Scoped_property& operator=(const Scoped_property&) = delete;
+  Scoped_property(Scoped_property&& o) noexcept : mesh_(std::exchange(o.mesh_, nullptr)), map_(o.map_) {}
+  Scoped_property& operator=(Scoped_property&& o) noexcept {
+    if (this != &o) {
+      release();
+      mesh_ = std::exchange(o.mesh_, nullptr);
+      map_ = o.map_;
+    }
+    return *this;
+  }
+  ~Scoped_property() { release(); }
+
+  T& operator[](Key k) const { return map_[k]; }
+  [[nodiscard]] detail::Property_map<Key, T> map() const { return map_; }
+
+  friend T& get(const Scoped_property& s, Key k) { return s.map_[k]; }
+  friend void put(const Scoped_property& s, Key k, const T& v) { s.map_[k] = v; }
+
+private:
+  void release() {
+    if (mesh_ != nullptr) mesh_->remove_property(map_);
+    mesh_ = nullptr;
+  }
+  Halfedge_connectivity* mesh_;
+  detail::Property_map<Key, T> map_;
+};
+
+template <class T>
+using Scoped_vertex_property = Scoped_property<Vertex_index, T>;
+template <class T>
+using Scoped_halfedge_property = Scoped_property<Halfedge_index, T>;
+template <class T>
+using Scoped_edge_property = Scoped_property<Edge_index, T>;
+template <class T>
+using Scoped_face_property = Scoped_property<Face_index, T>;
+
+} // namespace genmesh
+
+// ---------------------------------------------------------------------------
+// boost::graph_traits (choices copied from CGAL's Surface_mesh traits)
+// ---------------------------------------------------------------------------
+
+namespace boost {
+
+template <class P>
+struct graph_traits<genmesh::Halfedge_mesh<P>> {
+private:
+  struct Traversal_category : public virtual boost::bidirectional_graph_tag,
+                              public virtual boost::vertex_list_graph_tag,
+                              public virtual boost::edge_list_graph_tag,
+                              public virtual boost::adjacency_graph_tag {};
+
+public:
+  using vertex_descriptor = genmesh::Vertex_index;
+  using halfedge_descriptor = genmesh::Halfedge_index;
+  using edge_descriptor = genmesh::Edge_index;
+  using face_descriptor = genmesh::Face_index;
+  using vertex_property_type = P;
+
+  using directed_category = boost::undirected_tag;
+  using edge_parallel_category = boost::disallow_parallel_edge_tag;
+  using traversal_category = Traversal_category;
+
+  using vertex_iterator = genmesh::Vertex_iterator;
+  using halfedge_iterator = genmesh::Halfedge_iterator;
+  using edge_iterator = genmesh::Edge_iterator;
+  using face_iterator = genmesh::Face_iterator;
+
+  using in_edge_iterator = genmesh::In_edge_iterator;
+  using out_edge_iterator = genmesh::Out_edge_iterator;
+  using adjacency_iterator = genmesh::Vertex_around_target_iterator;
+
+  using vertices_size_type = std::size_t;
+  using halfedges_size_type = std::size_t;
+  using edges_size_type = std::size_t;
+  using faces_size_type = std::size_t;
+  using degree_size_type = std::size_t;
+
+  static vertex_descriptor null_vertex() { return {}; }
+  static halfedge_descriptor null_halfedge() { return {}; }
+  static face_descriptor null_face() { return {}; }
+};
+
+template <class P>
+struct graph_traits<const genmesh::Halfedge_mesh<P>> : graph_traits<genmesh::Halfedge_mesh<P>> {};
+
+} // namespace boost
+
+// ---------------------------------------------------------------------------
+// CGAL BGL free functions (found by ADL through Halfedge_mesh)
+// ---------------------------------------------------------------------------
+
+namespace genmesh {
+
+// VertexListGraph, EdgeListGraph, HalfedgeListGraph, FaceListGraph
+template <class P>
+std::size_t num_vertices(const Halfedge_mesh<P>& m) {
+  return m.n_vertices();
+}
+template <class P>
+std::size_t num_halfedges(const Halfedge_mesh<P>& m) {
+  return m.n_halfedges();
+}
+template <class P>
+std::size_t num_edges(const Halfedge_mesh<P>& m) {
+  return m.n_edges();
+}
+template <class P>
+std::size_t num_faces(const Halfedge_mesh<P>& m) {
+  return m.n_faces();
+}
+template <class P>
+Range<Vertex_iterator> vertices(const Halfedge_mesh<P>& m) {
+  return m.vertices();
+}
+template <class P>
+Range<Halfedge_iterator> halfedges(const Halfedge_mesh<P>& m) {
+  return m.halfedges();
+}
+template <class P>
+Range<Edge_iterator> edges(const Halfedge_mesh<P>& m) {
+  return m.edges();
+}
+template <class P>
+Range<Face_iterator> faces(const Halfedge_mesh<P>& m) {
+  return m.faces();
+}
+
+// HalfedgeGraph
+template <class P>
+Vertex_index source(Halfedge_index h, const Halfedge_mesh<P>& m) {
+  return m.source(h);
+}
+template <class P>
+Vertex_index target(Halfedge_index h, const Halfedge_mesh<P>& m) {
+  return m.target(h);
+}
+/// source(halfedge(e, g), g).
+template <class P>
+Vertex_index source(Edge_index e, const Halfedge_mesh<P>& m) {
+  return m.source(m.halfedge(e));
+}
+/// target(halfedge(e, g), g).
+template <class P>
+Vertex_index target(Edge_index e, const Halfedge_mesh<P>& m) {
+  return m.target(m.halfedge(e));
+}
+template <class P>
+Halfedge_index next(Halfedge_index h, const Halfedge_mesh<P>& m) {
+  return m.next(h);
+}
+template <class P>
+Halfedge_index prev(Halfedge_index h, const Halfedge_mesh<P>& m) {
+  return m.prev(h);
+}
+template <class P>
+Halfedge_index opposite(Halfedge_index h, const Halfedge_mesh<P>&) {
+  return Halfedge_connectivity::opposite(h);
+}
+template <class P>
+Edge_index edge(Halfedge_index h, const Halfedge_mesh<P>&) {
+  return Halfedge_connectivity::edge(h);
+}
+template <class P>
+Halfedge_index halfedge(Edge_index e, const Halfedge_mesh<P>&) {
+  return Halfedge_connectivity::halfedge(e);
+}
+template <class P>
+Halfedge_index halfedge(Vertex_index v, const Halfedge_mesh<P>& m) {
+  return m.halfedge(v);
+}
+/// The halfedge u -> v and whether it exists.
+template <class P>
+std::pair<Halfedge_index, bool> halfedge(Vertex_index u, Vertex_index v, const Halfedge_mesh<P>& m) {
+  const Halfedge_index h = m.halfedge(u, v);
+  return {h, h.is_valid()};
+}
+/// The edge between u and v, oriented u -> v, and whether it exists.
+template <class P>
+std::pair<Edge_index, bool> edge(Vertex_index u, Vertex_index v, const Halfedge_mesh<P>& m) {
+  const Halfedge_index h = m.halfedge(u, v);
+  return {Edge_index(h), h.is_valid()};
+}
+/// Edges leaving v, oriented so that source(e, m) == v (CGAL's order).
+template <class P>
+Range<Out_edge_iterator> out_edges(Vertex_index v, const Halfedge_mesh<P>& m) {
+  return m.out_edges(v);
+}
+/// Edges entering v, oriented so that target(e, m) == v.
+template <class P>
+Range<In_edge_iterator> in_edges(Vertex_index v, const Halfedge_mesh<P>& m) {
+  return m.in_edges(v);
+}
+/// The neighbours of v (sources of the halfedges around v).
+template <class P>
+Range<Vertex_around_target_iterator> adjacent_vertices(Vertex_index v, const Halfedge_mesh<P>& m) {
+  return m.vertices_around_target(v);
+}
+template <class P>
+std::size_t degree(Vertex_index v, const Halfedge_mesh<P>& m) {
+  return m.degree(v);
+}
+template <class P>
+std::size_t out_degree(Vertex_index v, const Halfedge_mesh<P>& m) {
+  return m.degree(v);
+}
+template <class P>
+std::size_t in_degree(Vertex_index v, const Halfedge_mesh<P>& m) {
+  return m.degree(v);
+}
+
+// FaceGraph
+template <class P>
+Face_index face(Halfedge_index h, const Halfedge_mesh<P>& m) {
+  return m.face(h);
+}
+template <class P>
+Halfedge_index halfedge(Face_index f, const Halfedge_mesh<P>& m) {
+  return m.halfedge(f);
+}
+template <class P>
+std::size_t degree(Face_index f, const Halfedge_mesh<P>& m) {
+  return m.degree(f);
+}
+
+// MutableHalfedgeGraph
+template <class P>
+void set_target(Halfedge_index h, Vertex_index v, Halfedge_mesh<P>& m) {
+  m.set_target(h, v);
+}
+template <class P>
+void set_next(Halfedge_index h, Halfedge_index nh, Halfedge_mesh<P>& m) {
+  m.set_next(h, nh);
+}
+template <class P>
+void set_halfedge(Vertex_index v, Halfedge_index h, Halfedge_mesh<P>& m) {
+  m.set_halfedge(v, h);
+}
+template <class P>
+Vertex_index add_vertex(Halfedge_mesh<P>& m) {
+  return m.add_vertex();
+}
+template <class P>
+Vertex_index add_vertex(const typename Halfedge_mesh<P>::Point& p, Halfedge_mesh<P>& m) {
+  return m.add_vertex(p);
+}
+/// A new edge; returns it as an edge (its halfedges are halfedge(e, 0/1)).
+template <class P>
+Edge_index add_edge(Halfedge_mesh<P>& m) {
+  return m.edge(m.add_edge());
+}
+template <class P>
+void remove_vertex(Vertex_index v, Halfedge_mesh<P>& m) {
+  m.remove_vertex(v);
+}
+template <class P>
+void remove_edge(Edge_index e, Halfedge_mesh<P>& m) {
+  m.remove_edge(e);
+}
+
+// MutableFaceGraph
+template <class P>
+Face_index add_face(Halfedge_mesh<P>& m) {
+  return m.add_face();
+}
+template <class P>
+void remove_face(Face_index f, Halfedge_mesh<P>& m) {
+  m.remove_face(f);
+}
+template <class P>
+void set_face(Halfedge_index h, Face_index f, Halfedge_mesh<P>& m) {
+  m.set_face(h, f);
+}
+template <class P>
+void set_halfedge(Face_index f, Halfedge_index h, Halfedge_mesh<P>& m) {
+  m.set_halfedge(f, h);
+}
+template <class P>
+void reserve(Halfedge_mesh<P>& m, std::size_t nv, std::size_t ne, std::size_t nf) {
+  m.reserve(nv, ne, nf);
+}
+template <class P>
+Garbage_collection_maps collect_garbage(Halfedge_mesh<P>& m, Garbage_order order = Garbage_order::stable) {
+  return m.collect_garbage(order);
+}
+
+// The claims of this header, checked where it is compiled.
+static_assert(HalfedgeListGraph<Halfedge_mesh<>> && VertexListGraph<Halfedge_mesh<>> &&
+              EdgeListGraph<Halfedge_mesh<>> && FaceListGraph<Halfedge_mesh<>> &&
+              MutableFaceGraph<Halfedge_mesh<>>);
+static_assert(HasVertexPoints<Halfedge_mesh<>> && HasIndexMap<Halfedge_mesh<>, vertex_index_t> &&
+              HasIndexMap<Halfedge_mesh<>, halfedge_index_t> && HasIndexMap<Halfedge_mesh<>, edge_index_t> &&
+              HasIndexMap<Halfedge_mesh<>, face_index_t>);
+
+} // namespace genmesh
