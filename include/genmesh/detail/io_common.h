@@ -42,14 +42,18 @@ inline File_content read_whole_file(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(status)) throw io_error(f.name, "is a directory, not a file");
   std::FILE* fp = std::fopen(f.name.c_str(), "rb");
   if (!fp) throw io_error(f.name, std::string("cannot open file: ") + std::strerror(errno));
-  // Size by seeking rather than file_size(): works for special files too.
+  // One fread of the whole file when its size is known; chunks otherwise
+  // (pipes and other special files).
   std::string data;
-  char chunk[1 << 16];
   if (std::fseek(fp, 0, SEEK_END) == 0) {
     const long size = std::ftell(fp);
-    if (size > 0) data.reserve(static_cast<std::size_t>(size));
     std::fseek(fp, 0, SEEK_SET);
+    if (size > 0) {
+      data.resize(static_cast<std::size_t>(size));
+      data.resize(std::fread(data.data(), 1, data.size(), fp));
+    }
   }
+  char chunk[1 << 14];
   std::size_t n;
   while ((n = std::fread(chunk, 1, sizeof chunk, fp)) > 0) data.append(chunk, n);
   const bool failed = std::ferror(fp) != 0;
@@ -86,14 +90,21 @@ inline bool is_text_byte(unsigned char c) {
 /// space, tab, \r, \f, \v. Every error it throws names the file and the line.
 class Text_cursor {
 public:
-  Text_cursor(const File_content& file, std::size_t start = 0, std::uint64_t line = 1)
+  /// With `text_only`, a NUL byte anywhere after `start` is reported at once
+  /// as binary data (off for headers followed by binary data, as in PLY).
+  Text_cursor(const File_content& file, std::size_t start = 0, std::uint64_t line = 1,
+              bool text_only = true)
       : file_(&file), p_(file.data.data() + start), end_(file.data.data() + file.data.size()),
         line_(line) {
-    check_no_nul(start);
+    if (text_only) check_no_nul(start);
+    if (start == 0 && file.data.starts_with("\xEF\xBB\xBF")) p_ += 3;   // UTF-8 byte order mark
   }
 
+  /// Throws io_error at the current line; at the end of a file that ends
+  /// with a newline, that is the last line, not the empty one after it.
   [[noreturn]] void fail(const std::string& message) const {
-    throw io_error(file_->name, message, line_);
+    const bool after_last = p_ == end_ && line_ > 1 && end_ != file_->data.data() && end_[-1] == '\n';
+    throw io_error(file_->name, message, after_last ? line_ - 1 : line_);
   }
   std::uint64_t line() const noexcept { return line_; }
   bool at_end() const noexcept { return p_ == end_; }
@@ -190,15 +201,21 @@ public:
     return v;
   }
 
-  /// Parses a signed integer.
-  std::int64_t read_int(const char* what) {
+  /// Parses a signed integer. With `slash_suffix`, a suffix like "/2/3" or
+  /// "//3" after the number is skipped (OBJ's v/vt/vn corners).
+  std::int64_t read_int(const char* what, bool slash_suffix = false) {
     skip_spaces();
     if (p_ == end_ || *p_ == '\n') fail(std::string("line ends before ") + what);
     const char* b = p_;
     if (*b == '+') ++b;
     std::int64_t v = 0;
     auto [ptr, ec] = std::from_chars(b, end_, v);
-    if (ec != std::errc() || (ptr != end_ && !is_space_or_newline(*ptr) && *ptr != '#'))
+    if (ec == std::errc() && slash_suffix && ptr != end_ && *ptr == '/') {
+      while (ptr != end_ && (*ptr == '/' || *ptr == '-' || *ptr == '+' || (*ptr >= '0' && *ptr <= '9')))
+        ++ptr;
+    }
+    if (ec != std::errc() || (ptr != end_ && !is_space_or_newline(*ptr) && *ptr != '#' &&
+                              !(continuation_ && *ptr == '\\')))
       bad_token(what, "an integer");
     p_ = ptr;
     return v;

@@ -4,6 +4,7 @@
 // anywhere, the counts on the keyword's line or the next, and per-vertex
 // extras (texture coordinates, normals, colors) and per-face colors after
 // the values that matter, which are ignored. One vertex or face per line.
+// Data after the last face the header announces is ignored (as CGAL does).
 // Refused: binary OFF, 4OFF and nOFF (not 3D).
 #pragma once
 
@@ -29,26 +30,14 @@ inline Polygon_soup read_off(const File_content& file) {
       in.fail("missing OFF header: expected 'OFF', found " + quote(keyword));
     }
   }
-  if (!in.at_eol_or_comment()) {
-    const auto save = in.position();
-    if (in.token() == "BINARY") in.fail("binary OFF is not supported");
-    (void)save;
-    // Counts follow on the keyword's line.
-    // (token() consumed them otherwise; re-parse below from a fresh cursor
-    // position is not possible, so only handle the common case of digits.)
-  }
-  // Counts: on the keyword's line if anything numeric follows, else on the
-  // next content line.
-  Text_cursor counts_cursor = in;
-  {
-    Text_cursor probe = in;
-    probe.skip_spaces();
-  }
+  // The counts follow on the keyword's line or on the next content line.
   if (in.at_eol_or_comment()) {
     in.next_line();
     if (!in.next_content_line()) in.fail("truncated: the OFF counts line is missing");
+  } else {
+    Text_cursor peek = in;
+    if (peek.token() == "BINARY") in.fail("binary OFF is not supported");
   }
-  (void)counts_cursor;
   const std::int64_t nv = in.read_int("vertex count");
   const std::int64_t nf = in.read_int("face count");
   if (!in.at_eol_or_comment()) (void)in.read_int("edge count");
@@ -63,7 +52,7 @@ inline Polygon_soup read_off(const File_content& file) {
   const auto cap = file.data.size() / 2 + 1;
   soup.points.reserve(std::min<std::size_t>(static_cast<std::size_t>(nv), cap));
   soup.offsets.reserve(std::min<std::size_t>(static_cast<std::size_t>(nf), cap) + 1);
-  soup.indices.reserve(std::min<std::size_t>(static_cast<std::size_t>(nf) * 3, cap));
+  soup.indices.reserve(std::min<std::size_t>(static_cast<std::size_t>(nf), cap / 3) * 3);
 
   for (std::int64_t i = 0; i < nv; ++i) {
     if (!in.next_content_line())
@@ -98,9 +87,8 @@ inline Polygon_soup read_off(const File_content& file) {
     soup.offsets.push_back(static_cast<Polygon_soup::Index>(soup.indices.size()));
     in.next_line();
   }
-  if (in.next_content_line())
-    in.fail("more data after the last face: the header's counts (" + std::to_string(nv) +
-            " vertices, " + std::to_string(nf) + " faces) are wrong");
+  // Whatever follows the last face is ignored, as CGAL does: real files
+  // (CGAL's own prim.off) have more faces than their header says.
   return soup;
 }
 

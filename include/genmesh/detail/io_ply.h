@@ -1,0 +1,414 @@
+// genmesh/detail/io_ply.h — PLY reader and writer (Stanford polygon format).
+//
+// Reads ascii, binary_little_endian and binary_big_endian. The `vertex`
+// element gives the points from its x, y, z properties (any numeric type, any
+// position among other properties); the `face` element gives the faces from
+// its `vertex_indices` (or `vertex_index`) list, with any integer count and
+// index type. Every other property and element (normals, colors, edges,
+// lists of any kind) is skipped. Writes ascii or binary little endian with
+// double coordinates.
+#pragma once
+
+#include <genmesh/detail/io_common.h>
+
+#include <vector>
+
+namespace genmesh::detail::io {
+
+enum class Ply_type : std::uint8_t { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
+
+inline std::optional<Ply_type> ply_type_from_name(std::string_view n) {
+  if (n == "char" || n == "int8") return Ply_type::int8;
+  if (n == "uchar" || n == "uint8") return Ply_type::uint8;
+  if (n == "short" || n == "int16") return Ply_type::int16;
+  if (n == "ushort" || n == "uint16") return Ply_type::uint16;
+  if (n == "int" || n == "int32") return Ply_type::int32;
+  if (n == "uint" || n == "uint32") return Ply_type::uint32;
+  if (n == "float" || n == "float32") return Ply_type::float32;
+  if (n == "double" || n == "float64") return Ply_type::float64;
+  return std::nullopt;
+}
+inline std::size_t ply_size(Ply_type t) {
+  switch (t) {
+    case Ply_type::int8: case Ply_type::uint8: return 1;
+    case Ply_type::int16: case Ply_type::uint16: return 2;
+    case Ply_type::int32: case Ply_type::uint32: case Ply_type::float32: return 4;
+    case Ply_type::float64: return 8;
+  }
+  return 0;
+}
+inline bool ply_is_integer(Ply_type t) { return t != Ply_type::float32 && t != Ply_type::float64; }
+
+/// A binary value as double (coordinates) ...
+inline double ply_load_double(const char* p, Ply_type t, bool little) {
+  switch (t) {
+    case Ply_type::int8: return static_cast<std::int8_t>(*p);
+    case Ply_type::uint8: return static_cast<std::uint8_t>(*p);
+    case Ply_type::int16: return load<std::int16_t>(p, little);
+    case Ply_type::uint16: return load<std::uint16_t>(p, little);
+    case Ply_type::int32: return load<std::int32_t>(p, little);
+    case Ply_type::uint32: return load<std::uint32_t>(p, little);
+    case Ply_type::float32: return load<float>(p, little);
+    case Ply_type::float64: return load<double>(p, little);
+  }
+  return 0;
+}
+/// ... and as an integer (counts and indices; only integer types get here).
+inline std::int64_t ply_load_int(const char* p, Ply_type t, bool little) {
+  switch (t) {
+    case Ply_type::int8: return static_cast<std::int8_t>(*p);
+    case Ply_type::uint8: return static_cast<std::uint8_t>(*p);
+    case Ply_type::int16: return load<std::int16_t>(p, little);
+    case Ply_type::uint16: return load<std::uint16_t>(p, little);
+    case Ply_type::int32: return load<std::int32_t>(p, little);
+    case Ply_type::uint32: return load<std::uint32_t>(p, little);
+    default: return 0;
+  }
+}
+
+struct Ply_property {
+  std::string name;
+  bool is_list = false;
+  Ply_type count_type = Ply_type::uint8;
+  Ply_type type = Ply_type::float32;
+};
+struct Ply_element {
+  std::string name;
+  std::uint64_t count = 0;
+  std::vector<Ply_property> properties;
+};
+
+struct Ply_header {
+  enum class Format { ascii, binary_little_endian, binary_big_endian } format = Format::ascii;
+  std::vector<Ply_element> elements;
+  std::size_t body_offset = 0;   ///< first byte after end_header's newline
+  std::uint64_t body_line = 0;   ///< line number of the body's first line
+};
+
+inline Ply_header read_ply_header(const File_content& file) {
+  Ply_header h;
+  Text_cursor in(file, 0, 1, /*text_only=*/false);
+  if (in.token() != "ply" || !in.at_eol()) in.fail("not a PLY file: the first line must be 'ply'");
+  in.next_line();
+  bool have_format = false;
+  for (;;) {
+    if (in.at_end()) in.fail("missing end_header: the file ends inside the PLY header");
+    const std::string_view kw = in.token();
+    if (kw == "end_header") {
+      in.next_line();
+      break;
+    }
+    if (kw.empty() || kw == "comment" || kw == "obj_info") {
+      in.next_line();
+      continue;
+    }
+    if (kw == "format") {
+      const auto f = in.token();
+      if (f == "ascii") h.format = Ply_header::Format::ascii;
+      else if (f == "binary_little_endian") h.format = Ply_header::Format::binary_little_endian;
+      else if (f == "binary_big_endian") h.format = Ply_header::Format::binary_big_endian;
+      else in.fail("unknown PLY format " + quote(f));
+      if (in.token() != "1.0") in.fail("unsupported PLY version (1.0 expected)");
+      have_format = true;
+    } else if (kw == "element") {
+      Ply_element e;
+      e.name = std::string(in.token());
+      if (e.name.empty()) in.fail("element without a name");
+      const std::int64_t n = in.read_int("element count");
+      if (n < 0) in.fail("negative count for element '" + e.name + "'");
+      e.count = static_cast<std::uint64_t>(n);
+      h.elements.push_back(std::move(e));
+    } else if (kw == "property") {
+      if (h.elements.empty()) in.fail("property before any element");
+      Ply_property p;
+      auto t = in.token();
+      if (t == "list") {
+        p.is_list = true;
+        const auto ct = in.token();
+        const auto c = ply_type_from_name(ct);
+        if (!c) in.fail("unknown PLY type " + quote(ct));
+        if (!ply_is_integer(*c)) in.fail("list count type " + quote(ct) + " is not an integer type");
+        p.count_type = *c;
+        t = in.token();
+      }
+      const auto ty = ply_type_from_name(t);
+      if (!ty) in.fail("unknown PLY type " + quote(t));
+      p.type = *ty;
+      p.name = std::string(in.token());
+      if (p.name.empty()) in.fail("property without a name");
+      h.elements.back().properties.push_back(std::move(p));
+    } else {
+      in.fail("unknown PLY header keyword " + quote(kw));
+    }
+    if (!in.at_eol()) in.fail("unexpected " + quote(in.token()) + " at the end of a header line");
+    in.next_line();
+  }
+  if (!have_format) in.fail("the PLY header has no format line");
+  h.body_offset = static_cast<std::size_t>(in.position() - file.data.data());
+  h.body_line = in.line();
+  return h;
+}
+
+inline Polygon_soup read_ply(const File_content& file) {
+  const Ply_header h = read_ply_header(file);
+  const Ply_element* vertex = nullptr;
+  const Ply_element* face = nullptr;
+  for (const auto& e : h.elements) {
+    if (e.name == "vertex" && !vertex) vertex = &e;
+    if (e.name == "face" && !face) face = &e;
+  }
+  if (!vertex) throw io_error(file.name, "the PLY header has no vertex element");
+  int xyz[3] = {-1, -1, -1};
+  for (std::size_t i = 0; i < vertex->properties.size(); ++i) {
+    const auto& p = vertex->properties[i];
+    for (int k = 0; k < 3; ++k)
+      if (p.name == std::string_view("xyz" + k, 1) && !p.is_list && xyz[k] < 0) xyz[k] = static_cast<int>(i);
+  }
+  for (int k = 0; k < 3; ++k)
+    if (xyz[k] < 0)
+      throw io_error(file.name, std::string("the PLY vertex element has no scalar '") + "xyz"[k] +
+                                    "' property");
+  int corners = -1;
+  if (face) {
+    for (std::size_t i = 0; i < face->properties.size(); ++i) {
+      const auto& p = face->properties[i];
+      if ((p.name == "vertex_indices" || p.name == "vertex_index") && corners < 0) {
+        if (!p.is_list) throw io_error(file.name, "the PLY face property '" + p.name + "' is not a list");
+        if (!ply_is_integer(p.type))
+          throw io_error(file.name, "the PLY face property '" + p.name + "' has a non-integer index type");
+        corners = static_cast<int>(i);
+      }
+    }
+    if (corners < 0) throw io_error(file.name, "the PLY face element has no vertex_indices list");
+  }
+  if (vertex->count > std::numeric_limits<Polygon_soup::Index>::max())
+    throw io_error(file.name, "too many vertices: " + std::to_string(vertex->count));
+
+  Polygon_soup soup;
+  const auto cap = file.data.size() / 2 + 1;
+  soup.points.reserve(std::min<std::size_t>(vertex->count, cap));
+  if (face) {
+    soup.offsets.reserve(std::min<std::size_t>(face->count, cap) + 1);
+    soup.indices.reserve(std::min<std::size_t>(face->count, cap / 3) * 3);
+  }
+  const std::int64_t nv = static_cast<std::int64_t>(vertex->count);
+  const auto index_error = [&](std::uint64_t f, std::int64_t idx) {
+    return "face " + std::to_string(f) + " has index " + std::to_string(idx) + " out of range (" +
+           std::to_string(nv) + " vertices)";
+  };
+
+  if (h.format == Ply_header::Format::ascii) {
+    Text_cursor in(file, h.body_offset, h.body_line);
+    for (const auto& e : h.elements) {
+      const bool is_vertex = &e == vertex, is_face = &e == face;
+      for (std::uint64_t i = 0; i < e.count; ++i) {
+        Eigen::Vector3d p(0, 0, 0);
+        for (std::size_t k = 0; k < e.properties.size(); ++k) {
+          const auto& prop = e.properties[k];
+          in.skip_whitespace_and_newlines();
+          if (in.at_end())
+            in.fail("truncated: the header says " + std::to_string(e.count) + " '" + e.name +
+                    "' elements, the data ends in number " + std::to_string(i));
+          if (prop.is_list) {
+            const std::int64_t n = in.read_int("list count");
+            if (n < 0) in.fail("negative list count in element '" + e.name + "' number " + std::to_string(i));
+            const bool take = is_face && static_cast<int>(k) == corners;
+            if (take && n < 3)
+              in.fail("face " + std::to_string(i) + " has " + std::to_string(n) +
+                      " corners (at least 3 needed)");
+            for (std::int64_t j = 0; j < n; ++j) {
+              in.skip_whitespace_and_newlines();
+              if (in.at_end()) in.fail("truncated: the data ends inside a list of element '" + e.name + "'");
+              if (take) {
+                const std::int64_t idx = in.read_int("vertex index");
+                if (idx < 0 || idx >= nv) in.fail(index_error(i, idx));
+                soup.indices.push_back(static_cast<Polygon_soup::Index>(idx));
+              } else {
+                (void)in.read_double("list value");
+              }
+            }
+          } else if (is_vertex && (static_cast<int>(k) == xyz[0] || static_cast<int>(k) == xyz[1] ||
+                                   static_cast<int>(k) == xyz[2])) {
+            double v = in.read_double("coordinate");
+            // A float property holds a float, whatever digits the text has.
+            if (prop.type == Ply_type::float32)
+              v = std::abs(v) <= std::numeric_limits<float>::max()
+                      ? static_cast<double>(static_cast<float>(v))
+                      : std::copysign(std::numeric_limits<double>::infinity(), v);   // then refused
+            else if (ply_is_integer(prop.type)) v = std::trunc(v);
+            for (int c = 0; c < 3; ++c)
+              if (static_cast<int>(k) == xyz[c]) p[c] = v;
+          } else {
+            // Skipped values are only checked to be numbers ("255" or "1.0"
+            // alike, whatever the declared type).
+            (void)in.read_double("property value");
+          }
+        }
+        if (is_vertex) {
+          check_finite(p, i, file.name, in.line());
+          soup.points.push_back(p);
+        }
+        if (is_face) soup.offsets.push_back(static_cast<Polygon_soup::Index>(soup.indices.size()));
+      }
+    }
+    return soup;
+  }
+
+  const bool little = h.format == Ply_header::Format::binary_little_endian;
+  const char* const base = file.data.data();
+  const char* p = base + h.body_offset;
+  const char* const end = base + file.data.size();
+  const auto offset = [&](const char* q) { return static_cast<std::uint64_t>(q - base); };
+  const auto truncated = [&](const Ply_element& e, std::uint64_t i) {
+    return io_error(file.name,
+                    "truncated: the header says " + std::to_string(e.count) + " '" + e.name +
+                        "' elements, the data ends in number " + std::to_string(i),
+                    std::nullopt, offset(p));
+  };
+  for (const auto& e : h.elements) {
+    const bool is_vertex = &e == vertex, is_face = &e == face;
+    const bool fixed = std::none_of(e.properties.begin(), e.properties.end(),
+                                    [](const Ply_property& q) { return q.is_list; });
+    if (fixed) {
+      std::size_t stride = 0;
+      std::size_t at[3] = {0, 0, 0};
+      for (std::size_t k = 0; k < e.properties.size(); ++k) {
+        for (int c = 0; c < 3; ++c)
+          if (is_vertex && static_cast<int>(k) == xyz[c]) at[c] = stride;
+        stride += ply_size(e.properties[k].type);
+      }
+      const auto avail = static_cast<std::uint64_t>(end - p);
+      if (stride != 0 && avail / stride < e.count) {
+        p += (avail / stride) * stride;
+        throw truncated(e, avail / stride);
+      }
+      if (is_vertex) {
+        const Ply_type tx = e.properties[xyz[0]].type, ty = e.properties[xyz[1]].type,
+                       tz = e.properties[xyz[2]].type;
+        for (std::uint64_t i = 0; i < e.count; ++i, p += stride) {
+          const Eigen::Vector3d q(ply_load_double(p + at[0], tx, little),
+                                  ply_load_double(p + at[1], ty, little),
+                                  ply_load_double(p + at[2], tz, little));
+          check_finite(q, i, file.name, std::nullopt, offset(p));
+          soup.points.push_back(q);
+        }
+      } else {
+        p += stride * e.count;
+      }
+      continue;
+    }
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      const char* const start = p;
+      Eigen::Vector3d point(0, 0, 0);
+      for (std::size_t k = 0; k < e.properties.size(); ++k) {
+        const auto& prop = e.properties[k];
+        if (!prop.is_list) {
+          const std::size_t s = ply_size(prop.type);
+          if (static_cast<std::size_t>(end - p) < s) {
+            p = start;
+            throw truncated(e, i);
+          }
+          if (is_vertex)
+            for (int c = 0; c < 3; ++c)
+              if (static_cast<int>(k) == xyz[c]) point[c] = ply_load_double(p, prop.type, little);
+          p += s;
+          continue;
+        }
+        const std::size_t cs = ply_size(prop.count_type);
+        if (static_cast<std::size_t>(end - p) < cs) {
+          p = start;
+          throw truncated(e, i);
+        }
+        const std::int64_t n = ply_load_int(p, prop.count_type, little);
+        if (n < 0)
+          throw io_error(file.name, "negative list count in element '" + e.name + "' number " + std::to_string(i),
+                         std::nullopt, offset(p));
+        const bool take = is_face && static_cast<int>(k) == corners;
+        if (take && n < 3)
+          throw io_error(file.name, "face " + std::to_string(i) + " has " + std::to_string(n) +
+                                        " corners (at least 3 needed)",
+                         std::nullopt, offset(p));
+        p += cs;
+        const std::size_t is = ply_size(prop.type);
+        if (static_cast<std::uint64_t>(end - p) / is < static_cast<std::uint64_t>(n)) {
+          p = start;
+          throw truncated(e, i);
+        }
+        if (take) {
+          for (std::int64_t j = 0; j < n; ++j, p += is) {
+            const std::int64_t idx = ply_load_int(p, prop.type, little);
+            if (idx < 0 || idx >= nv) throw io_error(file.name, index_error(i, idx), std::nullopt, offset(p));
+            soup.indices.push_back(static_cast<Polygon_soup::Index>(idx));
+          }
+        } else {
+          p += is * static_cast<std::size_t>(n);
+        }
+      }
+      if (is_vertex) {
+        check_finite(point, i, file.name, std::nullopt, offset(start));
+        soup.points.push_back(point);
+      }
+      if (is_face) soup.offsets.push_back(static_cast<Polygon_soup::Index>(soup.indices.size()));
+    }
+  }
+  return soup;
+}
+
+inline void write_ply(Atomic_file& out, const Polygon_soup& soup, bool binary, int precision) {
+  std::size_t max_corners = 0;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) max_corners = std::max(max_corners, soup.face_size(f));
+  // uchar counts and int indices are what every PLY reader accepts; wider
+  // types only when the soup needs them.
+  const bool wide_count = max_corners > 255;
+  const bool wide_index = soup.num_points() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max());
+  std::string& b = out.buffer;
+  b += "ply\nformat ";
+  b += binary ? "binary_little_endian" : "ascii";
+  b += " 1.0\ncomment written by genmesh\nelement vertex ";
+  append_int(b, soup.num_points());
+  b += "\nproperty double x\nproperty double y\nproperty double z\nelement face ";
+  append_int(b, soup.num_faces());
+  b += "\nproperty list ";
+  b += wide_count ? "uint " : "uchar ";
+  b += wide_index ? "uint" : "int";
+  b += " vertex_indices\nend_header\n";
+  for (std::size_t v = 0; v < soup.num_points(); ++v) {
+    check_point_for_write(soup, v, out.name());
+    const auto& p = soup.points[v];
+    if (binary) {
+      store_le(b, p.x());
+      store_le(b, p.y());
+      store_le(b, p.z());
+    } else {
+      append_double(b, p.x(), precision);
+      b += ' ';
+      append_double(b, p.y(), precision);
+      b += ' ';
+      append_double(b, p.z(), precision);
+      b += '\n';
+    }
+    out.flush_if_large();
+  }
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    check_face_for_write(soup, f, out.name());
+    const auto c = soup.face(f);
+    if (binary) {
+      if (wide_count) store_le(b, static_cast<std::uint32_t>(c.size()));
+      else b += static_cast<char>(static_cast<std::uint8_t>(c.size()));
+      for (auto i : c) {
+        if (wide_index) store_le(b, static_cast<std::uint32_t>(i));
+        else store_le(b, static_cast<std::int32_t>(i));
+      }
+    } else {
+      append_int(b, c.size());
+      for (auto i : c) {
+        b += ' ';
+        append_int(b, i);
+      }
+      b += '\n';
+    }
+    out.flush_if_large();
+  }
+}
+
+} // namespace genmesh::detail::io

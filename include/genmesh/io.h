@@ -1,0 +1,184 @@
+// genmesh/io.h — reading and writing polygon soups and meshes: OFF, OBJ, PLY, STL.
+//
+// What it reads: OFF ([ST][C][N]OFF, ASCII), OBJ (v and f; v, v/vt, v//vn,
+// v/vt/vn corners; negative indices; line continuation), PLY (ascii, binary
+// little and big endian; x y z of any numeric type among any other
+// properties; vertex_indices lists of any integer types; other elements
+// skipped) and STL (ASCII and binary, corners welded by exact equality).
+// The whole file is read into memory and parsed from there with
+// std::from_chars.
+//
+// STL corners with exactly equal coordinates are welded into one point
+// (first-seen order); a facet that welding makes degenerate is kept — it is
+// for check_soup() to report. OFF (and PLY) data after the elements the
+// header announces is ignored, as CGAL does.
+//
+// Guarantees: every malformed file gives a genmesh::io_error naming the file
+// and the line (text) or byte offset (binary) — never a crash, a silent
+// partial soup or a bad_alloc from a lying header. Read soups have finite
+// points, faces of at least 3 corners and in-range indices; nothing else is
+// checked (repeated corners, non-manifold faces: see <genmesh/validity.h>).
+// A write goes to a temporary file in the target's directory that is renamed
+// over the target at the end, so a failed write leaves an existing file
+// as it was.
+//
+// Limits: binary OFF, 4OFF/nOFF, OBJ free-form geometry and PLY tristrips are
+// not read. Text output of doubles round-trips exactly at the default
+// precision; binary STL stores floats; STL output triangulates polygons by
+// fans.
+#pragma once
+
+#include <genmesh/concepts.h>
+#include <genmesh/detail/io_common.h>
+#include <genmesh/detail/io_obj.h>
+#include <genmesh/detail/io_off.h>
+#include <genmesh/detail/io_ply.h>
+#include <genmesh/detail/io_stl.h>
+#include <genmesh/exceptions.h>
+#include <genmesh/polygon_soup.h>
+#include <genmesh/soup_to_mesh.h>
+
+#include <cctype>
+#include <filesystem>
+#include <string>
+
+namespace genmesh {
+
+/// A mesh file format.
+enum class File_format {
+  automatic,   ///< from the file name's extension (case-insensitive); for reading, from the content if that fails
+  off,
+  obj,
+  ply,
+  stl,
+};
+
+/// Options of read_soup() and read_mesh().
+struct Read_options {
+  File_format format = File_format::automatic;
+  /// read_mesh only: passed to build_mesh() (split non-manifold vertices, reorient).
+  bool repair = false;
+};
+
+/// Options of write_soup() and write_mesh().
+struct Write_options {
+  File_format format = File_format::automatic;
+  /// PLY and STL: binary (little endian) instead of text.
+  bool binary = false;
+  /// Significant digits of coordinates in text formats. 17 (or more) writes
+  /// the shortest text that reads back as the same double.
+  int precision = 17;
+};
+
+namespace detail::io {
+
+inline File_format format_from_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".off") return File_format::off;
+  if (ext == ".obj") return File_format::obj;
+  if (ext == ".ply") return File_format::ply;
+  if (ext == ".stl") return File_format::stl;
+  return File_format::automatic;
+}
+
+/// Guesses the format from the content; automatic when nothing fits.
+inline File_format format_from_content(const std::string& d) {
+  if (d.starts_with("ply\n") || d.starts_with("ply\r\n")) return File_format::ply;
+  if (stl_is_ascii(d)) return File_format::stl;
+  // First token of the first line that is not blank or a comment.
+  std::size_t i = 0;
+  for (;;) {
+    while (i < d.size() && Text_cursor::is_space_or_newline(d[i])) ++i;
+    if (i < d.size() && d[i] == '#') {
+      i = d.find('\n', i);
+      if (i == std::string::npos) break;
+      continue;
+    }
+    break;
+  }
+  if (i < d.size()) {
+    std::size_t j = i;
+    while (j < d.size() && !Text_cursor::is_space_or_newline(d[j])) ++j;
+    std::string_view t(d.data() + i, j - i);
+    if (t.ends_with("OFF") && t.size() <= 7) return File_format::off;
+    for (std::string_view k : {"v", "vt", "vn", "f", "o", "g", "s", "mtllib", "usemtl"})
+      if (t == k) return File_format::obj;
+  }
+  if (d.size() >= 84 && d.size() == 84 + 50 * std::uint64_t{load<std::uint32_t>(d.data() + 80, true)})
+    return File_format::stl;
+  return File_format::automatic;
+}
+
+} // namespace detail::io
+
+/// Reads a polygon soup from an OFF, OBJ, PLY or STL file. The format comes
+/// from options.format, else from the extension, else from the content.
+/// Throws io_error (naming the file, and the line or byte offset) on any
+/// problem: missing or empty file, unknown format, truncated data, wrong
+/// counts, indices out of range, faces with fewer than 3 corners, NaN or inf
+/// coordinates, malformed numbers, binary data in a text format.
+inline Polygon_soup read_soup(const std::filesystem::path& path, const Read_options& options = {}) {
+  namespace d = detail::io;
+  const d::File_content file = d::read_whole_file(path);
+  File_format format = options.format;
+  if (format == File_format::automatic) format = d::format_from_extension(path);
+  if (format == File_format::automatic) format = d::format_from_content(file.data);
+  switch (format) {
+    case File_format::off: return d::read_off(file);
+    case File_format::obj: return d::read_obj(file);
+    case File_format::ply: return d::read_ply(file);
+    case File_format::stl: return d::read_stl(file);
+    case File_format::automatic: break;
+  }
+  throw io_error(file.name, "unknown format: the extension " + d::quote(path.extension().string()) +
+                                " is not .off, .obj, .ply or .stl and the content is none of them");
+}
+
+/// Writes a polygon soup as OFF, OBJ, PLY (ascii or binary little endian) or
+/// STL (ASCII or binary; polygons triangulated as fans). The format comes from
+/// options.format, else from the extension. Throws io_error if the format is
+/// unknown, the directory does not exist or is not writable, or the soup
+/// cannot be written (an index out of range, a face of fewer than 3 corners,
+/// a non-finite point); the target is then untouched.
+inline void write_soup(const std::filesystem::path& path, const Polygon_soup& soup,
+                       const Write_options& options = {}) {
+  namespace d = detail::io;
+  File_format format = options.format;
+  if (format == File_format::automatic) format = d::format_from_extension(path);
+  if (format == File_format::automatic)
+    throw io_error(path.string(), "unknown format: the extension " + d::quote(path.extension().string()) +
+                                      " is not .off, .obj, .ply or .stl");
+  d::Atomic_file out(path);
+  switch (format) {
+    case File_format::off: d::write_off(out, soup, options.precision); break;
+    case File_format::obj: d::write_obj(out, soup, options.precision); break;
+    case File_format::ply: d::write_ply(out, soup, options.binary, options.precision); break;
+    case File_format::stl: d::write_stl(out, soup, options.binary, options.precision); break;
+    case File_format::automatic: break;
+  }
+  out.commit();
+}
+
+/// Reads a file into the (empty) mesh g: read_soup(), then build_mesh()
+/// (vertex and face order kept). A soup that build_mesh refuses (non-manifold,
+/// inconsistently oriented; see Read_options::repair) gives an io_error naming
+/// the file, with build_mesh's message.
+template <MutableFaceGraph G>
+void read_mesh(const std::filesystem::path& path, G& g, const Read_options& options = {}) {
+  const Polygon_soup soup = read_soup(path, options);
+  try {
+    build_mesh(soup, g, Build_options{.repair = options.repair});
+  } catch (const invalid_input& e) {
+    throw io_error(path.string(), e.what());
+  }
+}
+
+/// Writes the mesh g: to_soup(g) (vertices and faces in iteration order),
+/// then write_soup().
+template <FaceListGraph G>
+void write_mesh(const std::filesystem::path& path, const G& g, const Write_options& options = {}) {
+  write_soup(path, to_soup(g), options);
+}
+
+} // namespace genmesh

@@ -1,0 +1,773 @@
+// Tests of <genmesh/io.h>: round trips on every format and variant,
+// hand-written files of each format, every kind of bad input with its
+// specific error, atomic writes, real meshes against CGAL::IO, and
+// read_mesh/write_mesh on every backend.
+#include <genmesh/generators.h>
+#include <genmesh/io.h>
+
+#include "backends.h"
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/IO/polygon_soup_io.h>
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using genmesh::File_format;
+using genmesh::io_error;
+using genmesh::Polygon_soup;
+using genmesh::read_soup;
+using genmesh::write_soup;
+
+namespace {
+
+std::string write_file(const std::string& name, const std::string& content) {
+  const std::string p = genmesh_test::tmp_path(name);
+  std::ofstream(p, std::ios::binary) << content;
+  return p;
+}
+
+std::string read_bytes(const std::string& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// Little- or big-endian byte strings for hand-made binary files.
+struct Bytes {
+  std::string s;
+  template <class T>
+  Bytes& le(T v) {
+    char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    if constexpr (std::endian::native == std::endian::big) std::reverse(b, b + sizeof(T));
+    s.append(b, sizeof(T));
+    return *this;
+  }
+  template <class T>
+  Bytes& be(T v) {
+    char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    if constexpr (std::endian::native == std::endian::little) std::reverse(b, b + sizeof(T));
+    s.append(b, sizeof(T));
+    return *this;
+  }
+  Bytes& text(const std::string& t) {
+    s += t;
+    return *this;
+  }
+};
+
+struct Expected_error {
+  std::string message;                  ///< a substring of the message
+  std::optional<std::uint64_t> line;    ///< for text formats
+  std::optional<std::uint64_t> offset;  ///< for binary formats
+};
+
+/// Runs f, which must throw io_error about `file` with the expected message
+/// and position.
+void expect_io_error(const std::function<void()>& f, const std::string& file, const Expected_error& ex) {
+  try {
+    f();
+    ADD_FAILURE() << "no io_error for " << file << " (expected: " << ex.message << ")";
+  } catch (const io_error& e) {
+    EXPECT_EQ(e.file(), file);
+    EXPECT_NE(std::string(e.what()).find(fs::path(file).filename().string()), std::string::npos) << e.what();
+    EXPECT_NE(e.message().find(ex.message), std::string::npos)
+        << "message: " << e.message() << "\nexpected: " << ex.message;
+    EXPECT_EQ(e.line(), ex.line) << e.what();
+    EXPECT_EQ(e.byte_offset(), ex.offset) << e.what();
+  }
+}
+
+void expect_read_error(const std::string& name, const std::string& content, const Expected_error& ex) {
+  const std::string p = write_file(name, content);
+  SCOPED_TRACE(name);
+  expect_io_error([&] { (void)read_soup(p); }, p, ex);
+}
+
+/// A soup with coordinates that have no short decimal form, mixed face sizes
+/// and one face of more than 255 corners (needs a wider PLY count type).
+Polygon_soup awkward_soup() {
+  Polygon_soup s = genmesh::make_icosphere(1);
+  for (auto& p : s.points) p = p * (1.0 / 3.0) + Eigen::Vector3d(std::numbers::pi, -1e-300, 1e22);
+  s.add_face({0, 1, 2, 3, 4});
+  std::vector<Polygon_soup::Index> big;
+  for (Polygon_soup::Index i = 0; i < 300; ++i) big.push_back(i % static_cast<Polygon_soup::Index>(s.num_points()));
+  s.add_face(big);
+  return s;
+}
+
+std::string describe(const Polygon_soup& s) {
+  return std::to_string(s.num_points()) + " points, " + std::to_string(s.num_faces()) + " faces";
+}
+
+} // namespace
+
+// ---- round trips ---------------------------------------------------------------
+
+struct Round_trip_case {
+  std::string file;
+  bool binary;
+};
+
+TEST(IoRoundTrip, OffObjPlyAreExact) {
+  const Polygon_soup s = awkward_soup();
+  for (const Round_trip_case& c : {Round_trip_case{"rt.off", false}, {"rt.obj", false}, {"rt.ply", false},
+                                   {"rt_bin.ply", true}, {"RT_UPPER.OFF", false}}) {
+    SCOPED_TRACE(c.file);
+    const std::string p = genmesh_test::tmp_path(c.file);
+    write_soup(p, s, {.binary = c.binary});
+    const Polygon_soup r = read_soup(p);
+    EXPECT_EQ(r.num_points(), s.num_points());
+    EXPECT_EQ(r.num_faces(), s.num_faces());
+    EXPECT_TRUE(r == s) << describe(r);
+  }
+}
+
+TEST(IoRoundTrip, BinaryPlyIsLittleEndianDoubleWithUcharCounts) {
+  Polygon_soup s = genmesh::make_tetrahedron();
+  const std::string p = genmesh_test::tmp_path("tet_bin.ply");
+  write_soup(p, s, {.binary = true});
+  const std::string d = read_bytes(p);
+  EXPECT_NE(d.find("format binary_little_endian 1.0"), std::string::npos);
+  EXPECT_NE(d.find("property double x"), std::string::npos);
+  EXPECT_NE(d.find("property list uchar int vertex_indices"), std::string::npos);
+  const auto body = d.find("end_header\n") + 11;
+  // 4 points * 3 doubles + 4 faces * (1 + 3 * 4) bytes.
+  EXPECT_EQ(d.size() - body, 4u * 24u + 4u * 13u);
+}
+
+TEST(IoRoundTrip, StlTextIsExactAndBinaryIsFloat) {
+  // A closed triangle mesh: every point is used, so welding recovers exactly
+  // the points, in first-seen order.
+  Polygon_soup s = genmesh::make_icosphere(2);
+  for (auto& p : s.points) p = p * (1.0 / 7.0);
+  for (const bool binary : {false, true}) {
+    SCOPED_TRACE(binary ? "binary" : "ascii");
+    const std::string p = genmesh_test::tmp_path(binary ? "rt_bin.stl" : "rt.stl");
+    write_soup(p, s, {.binary = binary});
+    if (binary) {
+      EXPECT_EQ(fs::file_size(p), 84u + 50u * s.num_faces());
+    }
+    const Polygon_soup r = read_soup(p);
+    ASSERT_EQ(r.num_faces(), s.num_faces());
+    EXPECT_EQ(r.num_points(), s.num_points());
+    for (std::size_t f = 0; f < s.num_faces(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector3d& a = s.points[s.face(f)[k]];
+        const Eigen::Vector3d& b = r.points[r.face(f)[k]];
+        if (binary)
+          for (int i = 0; i < 3; ++i) EXPECT_EQ(b[i], static_cast<double>(static_cast<float>(a[i])));
+        else
+          EXPECT_EQ(a, b);
+      }
+  }
+}
+
+TEST(IoRoundTrip, StlTriangulatesPolygonsByFans) {
+  const Polygon_soup cube = genmesh::make_cube();
+  const std::string p = genmesh_test::tmp_path("cube.stl");
+  write_soup(p, cube);
+  const Polygon_soup r = read_soup(p);
+  ASSERT_EQ(r.num_faces(), 12u);
+  EXPECT_EQ(r.num_points(), 8u);
+  for (std::size_t f = 0; f < 6; ++f) {
+    const auto q = cube.face(f);
+    for (int t = 0; t < 2; ++t) {
+      const auto tri = r.face(2 * f + t);
+      EXPECT_EQ(r.points[tri[0]], cube.points[q[0]]);
+      EXPECT_EQ(r.points[tri[1]], cube.points[q[1 + t]]);
+      EXPECT_EQ(r.points[tri[2]], cube.points[q[2 + t]]);
+    }
+  }
+}
+
+TEST(IoRoundTrip, LowerPrecisionRoundsCoordinates) {
+  Polygon_soup s = genmesh::make_tetrahedron();
+  s.points[0] = Eigen::Vector3d(1.0 / 3.0, 2.0 / 3.0, 12345.678901234);
+  const std::string p = genmesh_test::tmp_path("prec.obj");
+  write_soup(p, s, {.precision = 6});
+  const Polygon_soup r = read_soup(p);
+  EXPECT_EQ(r.points[0], Eigen::Vector3d(0.333333, 0.666667, 12345.7));
+  EXPECT_EQ(r.points[1], s.points[1]);
+}
+
+TEST(IoRoundTrip, FormatOptionOverridesExtension) {
+  const Polygon_soup s = genmesh::make_cube();
+  const std::string p = genmesh_test::tmp_path("cube_as_obj.dat");
+  write_soup(p, s, {.format = File_format::obj});
+  EXPECT_EQ(read_bytes(p).substr(0, 1), "#");
+  EXPECT_EQ(read_soup(p, {.format = File_format::obj}), s);
+  EXPECT_EQ(read_soup(p), s) << "content sniffing finds OBJ";
+  const std::string q = genmesh_test::tmp_path("cube_off.txt");
+  write_soup(q, s, {.format = File_format::off});
+  EXPECT_EQ(read_soup(q), s) << "content sniffing finds OFF";
+  const std::string b = genmesh_test::tmp_path("cube_bin.xyz");
+  write_soup(b, s, {.format = File_format::ply, .binary = true});
+  EXPECT_EQ(read_soup(b), s) << "content sniffing finds PLY";
+}
+
+// ---- hand-written files -----------------------------------------------------------
+
+TEST(IoOff, CommentsColorsAndVariants) {
+  const std::string p = write_file("colors.off",
+                                   "# comment\n"
+                                   "COFF\n"
+                                   "\n"
+                                   "4 2 0 # counts\n"
+                                   "0 0 0 255 0 0 255\n"
+                                   "# a comment between vertices\n"
+                                   "1 0 0 0 255 0\n"
+                                   "  1 1 0 0.5 0.5 0.5\r\n"
+                                   "0 1 0\n"
+                                   "3 0 1 2 1 0 0 #red\n"
+                                   "3 0 2 3\n");
+  const Polygon_soup s = read_soup(p);
+  ASSERT_EQ(s.num_points(), 4u);
+  EXPECT_EQ(s.points[2], Eigen::Vector3d(1, 1, 0));
+  ASSERT_EQ(s.num_faces(), 2u);
+  EXPECT_EQ(std::vector<Polygon_soup::Index>(s.face(0).begin(), s.face(0).end()),
+            (std::vector<Polygon_soup::Index>{0, 1, 2}));
+  EXPECT_EQ(s.face(1)[2], 3u);
+
+  // Counts on the keyword's line, normals (NOFF), scientific notation, '+',
+  // a UTF-8 byte order mark.
+  const Polygon_soup t = read_soup(write_file("noff.off",
+                                              "\xEF\xBB\xBFNOFF 3 1 3\n"
+                                              "1e0 +2 -3.5E-1 0 0 1\n"
+                                              "0 0 0 0 0 1\n"
+                                              "0 1 0 0 0 1\n"
+                                              "3 2 1 0\n"));
+  ASSERT_EQ(t.num_points(), 3u);
+  EXPECT_EQ(t.points[0], Eigen::Vector3d(1, 2, -0.35));
+  EXPECT_EQ(t.face(0)[0], 2u);
+}
+
+TEST(IoObj, CornerFormsNegativeIndicesAndPolygons) {
+  const std::string p = write_file("forms.obj",
+                                   "# comment\n"
+                                   "mtllib x.mtl\n"
+                                   "o thing\n"
+                                   "v 0 0 0\n"
+                                   "v 1 0 0 1.0 0.5 0.5 0.5\n"
+                                   "v 1 1 0\n"
+                                   "v 0 1 0\n"
+                                   "vt 0 0\n"
+                                   "vn 0 0 1\n"
+                                   "g group\n"
+                                   "usemtl m\n"
+                                   "s off\n"
+                                   "f 1/1/1 2/1/1 3/1/1 4/1/1\n"
+                                   "f 1//1 3//1 4//1\n"
+                                   "f 1/1 2/1 3/1 # comment\n"
+                                   "v 2 0 0\n"
+                                   "f -1 -4 \\\n"
+                                   "  -3\n"
+                                   "l 1 2\n"
+                                   "f 5 6 2\n"      // 6 is defined later
+                                   "v 2 1 0\n");
+  const Polygon_soup s = read_soup(p);
+  ASSERT_EQ(s.num_points(), 6u);
+  EXPECT_EQ(s.points[1], Eigen::Vector3d(1, 0, 0));
+  ASSERT_EQ(s.num_faces(), 5u);
+  using V = std::vector<Polygon_soup::Index>;
+  auto face = [&](std::size_t f) { return V(s.face(f).begin(), s.face(f).end()); };
+  EXPECT_EQ(face(0), (V{0, 1, 2, 3}));
+  EXPECT_EQ(face(1), (V{0, 2, 3}));
+  EXPECT_EQ(face(2), (V{0, 1, 2}));
+  EXPECT_EQ(face(3), (V{4, 1, 2}));
+  EXPECT_EQ(face(4), (V{4, 5, 1}));
+}
+
+TEST(IoPly, AsciiWithExtraPropertiesAndElements) {
+  const std::string p = write_file("extra.ply",
+                                   "ply\r\n"
+                                   "format ascii 1.0\n"
+                                   "comment hello\n"
+                                   "obj_info x\n"
+                                   "element material 1\n"
+                                   "property list uchar float weights\n"
+                                   "property int id\n"
+                                   "element vertex 4\n"
+                                   "property uchar red\n"
+                                   "property list uchar int tags\n"
+                                   "property float z\n"
+                                   "property double y\n"
+                                   "property short x\n"
+                                   "element edge 1\n"
+                                   "property int vertex1\n"
+                                   "property int vertex2\n"
+                                   "element face 2\n"
+                                   "property uchar flags\n"
+                                   "property list int uint vertex_index\n"
+                                   "property float quality\n"
+                                   "end_header\n"
+                                   "2 0.5 0.25 7\n"
+                                   "255 0 0.5 0 0\n"
+                                   "255 2 1 2 0 0.25 1\n"
+                                   "0 1 9 1.5 0.5 1\n"
+                                   "0 0 2 3 2\n"
+                                   "0 1\n"
+                                   "1 3 0 1 2 0.5\n"
+                                   "1 4 0 2 3 1 0.5\n");
+  const Polygon_soup s = read_soup(p);
+  ASSERT_EQ(s.num_points(), 4u);
+  EXPECT_EQ(s.points[0], Eigen::Vector3d(0, 0, 0.5));
+  EXPECT_EQ(s.points[1], Eigen::Vector3d(1, 0.25, 0));
+  EXPECT_EQ(s.points[2], Eigen::Vector3d(1, 0.5, 1.5));
+  EXPECT_EQ(s.points[3], Eigen::Vector3d(2, 3, 2));
+  ASSERT_EQ(s.num_faces(), 2u);
+  EXPECT_EQ(s.face_size(1), 4u);
+  EXPECT_EQ(s.face(1)[3], 1u);
+}
+
+namespace {
+// A binary PLY with float coordinates behind a double normal, a uchar color,
+// a vertex list property, then faces with the given count and index types.
+template <class Count, class Index, bool big_endian>
+std::string binary_ply(const char* count_name, const char* index_name) {
+  Bytes b;
+  b.text(std::string("ply\nformat ") + (big_endian ? "binary_big_endian" : "binary_little_endian") +
+         " 1.0\n"
+         "element vertex 4\n"
+         "property double nx\n"
+         "property float x\n"
+         "property uchar red\n"
+         "property float y\n"
+         "property list ushort int tags\n"
+         "property float z\n"
+         "element face 2\n"
+         "property list " + count_name + " " + index_name + " vertex_indices\n"
+         "property int8 flag\n"
+         "end_header\n");
+  auto put = [&](auto v) {
+    if constexpr (big_endian) b.be(v); else b.le(v);
+  };
+  const float pts[4][3] = {{0.1f, 0.2f, 0.3f}, {1.1f, 0.2f, 0.3f}, {1.1f, 1.2f, 0.3f}, {0.1f, 1.2f, -0.3f}};
+  for (int v = 0; v < 4; ++v) {
+    put(0.5);
+    put(pts[v][0]);
+    put(std::uint8_t{7});
+    put(pts[v][1]);
+    put(std::uint16_t(v % 2));
+    if (v % 2) put(std::int32_t{42});
+    put(pts[v][2]);
+  }
+  put(Count(3)); put(Index(0)); put(Index(1)); put(Index(2)); put(std::int8_t{-1});
+  put(Count(4)); put(Index(0)); put(Index(2)); put(Index(3)); put(Index(1)); put(std::int8_t{1});
+  return b.s;
+}
+
+template <class Count, class Index, bool big_endian>
+void check_binary_ply(const char* count_name, const char* index_name) {
+  SCOPED_TRACE(std::string(count_name) + "/" + index_name + (big_endian ? " big endian" : " little endian"));
+  const std::string p = write_file(std::string("bin_") + count_name + "_" + index_name + (big_endian ? "_be" : "_le") + ".ply",
+                                   binary_ply<Count, Index, big_endian>(count_name, index_name));
+  const Polygon_soup s = read_soup(p);
+  ASSERT_EQ(s.num_points(), 4u);
+  // float coordinates: exactly the float values, not their decimal spelling
+  EXPECT_EQ(s.points[1], Eigen::Vector3d(double(1.1f), double(0.2f), double(0.3f)));
+  EXPECT_NEAR(s.points[3].z(), -0.3, 1e-7);
+  ASSERT_EQ(s.num_faces(), 2u);
+  EXPECT_EQ(s.face_size(0), 3u);
+  EXPECT_EQ(s.face_size(1), 4u);
+  EXPECT_EQ(s.face(1)[1], 2u);
+  EXPECT_EQ(s.face(1)[3], 1u);
+}
+} // namespace
+
+TEST(IoPly, BinaryAnyIntegerTypesBothEndians) {
+  check_binary_ply<std::uint8_t, std::int32_t, false>("uchar", "int");
+  check_binary_ply<std::uint8_t, std::uint32_t, false>("uint8", "uint");
+  check_binary_ply<std::int32_t, std::uint16_t, false>("int", "ushort");
+  check_binary_ply<std::uint32_t, std::int8_t, false>("uint", "char");
+  check_binary_ply<std::int16_t, std::uint8_t, false>("short", "uchar");
+  check_binary_ply<std::uint8_t, std::int32_t, true>("uchar", "int");
+  check_binary_ply<std::uint16_t, std::uint32_t, true>("ushort", "uint32");
+  check_binary_ply<std::int8_t, std::int16_t, true>("int8", "int16");
+}
+
+TEST(IoStl, AsciiWeldsExactlyEqualCornersInFirstSeenOrder) {
+  const std::string p = write_file("weld.stl",
+                                   "solid two\n"
+                                   "facet normal 0 0 1\n outer loop\n"
+                                   "  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n"
+                                   " endloop\nendfacet\n"
+                                   "facet normal 0 0 1\n outer loop\n"
+                                   "  vertex 0 1 0\n  vertex 1.0 0 0\n  vertex 1 1 -0.0\n"
+                                   " endloop\nendfacet\n"
+                                   "facet normal 0 0 1\n outer loop\n"
+                                   "  vertex 1 1 0.0000000000000001\n  vertex 1 1 0\n  vertex 1 1 0\n"
+                                   " endloop\nendfacet\n"
+                                   "endsolid two\n");
+  const Polygon_soup s = read_soup(p);
+  // 0 0 0 | 1 0 0 | 0 1 0 | 1 1 0 (-0.0 welded) | 1 1 1e-16 (not equal: kept)
+  ASSERT_EQ(s.num_points(), 5u);
+  EXPECT_EQ(s.points[3], Eigen::Vector3d(1, 1, 0));
+  ASSERT_EQ(s.num_faces(), 3u);
+  using V = std::vector<Polygon_soup::Index>;
+  EXPECT_EQ(V(s.face(1).begin(), s.face(1).end()), (V{2, 1, 3}));
+  // the degenerate facet is kept as it is
+  EXPECT_EQ(V(s.face(2).begin(), s.face(2).end()), (V{4, 3, 3}));
+}
+
+TEST(IoStl, BinaryWeldsAndAcceptsSolidInHeader) {
+  Bytes b;
+  std::string header = "solid this header starts like ASCII";
+  header.resize(80, ' ');
+  b.text(header).le(std::uint32_t{2});
+  const float tris[2][3][3] = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 0}, {1, 0, 0}, {1, 1, 0}}};
+  for (auto& t : tris) {
+    b.le(0.f).le(0.f).le(1.f);
+    for (auto& v : t) b.le(v[0]).le(v[1]).le(v[2]);
+    b.le(std::uint16_t{0});
+  }
+  const Polygon_soup s = read_soup(write_file("weld_bin.stl", b.s));
+  ASSERT_EQ(s.num_points(), 4u);
+  ASSERT_EQ(s.num_faces(), 2u);
+  EXPECT_EQ(s.face(1)[0], 2u);
+  EXPECT_EQ(s.face(1)[1], 1u);
+  EXPECT_EQ(s.face(1)[2], 3u);
+}
+
+// ---- bad input ------------------------------------------------------------------
+
+TEST(IoErrors, FileLevel) {
+  const std::string missing = genmesh_test::tmp_path("does_not_exist.off");
+  expect_io_error([&] { (void)read_soup(missing); }, missing, {"does not exist", {}, {}});
+  expect_read_error("empty.off", "", {"file is empty", {}, {}});
+  expect_read_error("empty.ply", "", {"file is empty", {}, {}});
+  expect_read_error("unknown.xyz", "hello world\n", {"unknown format", {}, {}});
+  const std::string dir = genmesh_test::tmp_path("a_directory.off");
+  fs::create_directories(dir);
+  expect_io_error([&] { (void)read_soup(dir); }, dir, {"directory", {}, {}});
+}
+
+TEST(IoErrors, Off) {
+  const std::string head = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+  expect_read_error("trunc_v.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n", {"truncated: the header says 4 vertices, the file has 2", 4, {}});
+  expect_read_error("trunc_f.off", head, {"truncated: the header says 1 faces, the file has 0", 5, {}});
+  expect_read_error("range.off", head + "3 0 1 3\n", {"face 0 has index 3 out of range (3 vertices)", 6, {}});
+  expect_read_error("neg.off", head + "3 0 -1 2\n", {"face 0 has index -1 out of range", 6, {}});
+  expect_read_error("two.off", head + "2 0 1\n", {"face 0 has 2 corners (at least 3 needed)", 6, {}});
+  expect_read_error("short_face.off", head + "4 0 1 2\n", {"face 0 announces 4 corners but lists 3", 6, {}});
+  expect_read_error("nan.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n",
+                    {"vertex 1 has a non-finite coordinate", 4, {}});
+  expect_read_error("inf.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 -inf\n3 0 1 2\n",
+                    {"vertex 2 has a non-finite coordinate", 5, {}});
+  expect_read_error("huge.off", "OFF\n3 1 0\n0 0 0\n1 0 1e999\n0 1 0\n3 0 1 2\n",
+                    {"vertex 1 has a non-finite coordinate", 4, {}});
+  expect_read_error("malformed.off", "OFF\n3 1 0\n0 0 0\n1 0 1.2.3\n0 1 0\n3 0 1 2\n",
+                    {"malformed z coordinate: expected a number, found '1.2.3'", 4, {}});
+  expect_read_error("malformed_idx.off", head + "3 0 1 x\n", {"malformed vertex index", 6, {}});
+  expect_read_error("counts.off", "OFF\n3 -1 0\n", {"negative count", 2, {}});
+  expect_read_error("no_counts.off", "OFF\n# nothing else\n", {"counts line is missing", 2, {}});
+  expect_read_error("header.off", "OF\n3 1 0\n", {"missing OFF header: expected 'OFF', found 'OF'", 1, {}});
+  // Wrong counts: too few vertices announced makes a vertex line a face,
+  // too many makes a face line a vertex and leaves the faces short.
+  expect_read_error("few_v.off", "OFF\n2 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                    {"face 0 has 0 corners (at least 3 needed)", 5, {}});
+  expect_read_error("many_v.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                    {"truncated: the header says 1 faces, the file has 0", 6, {}});
+  // Too few faces announced: the rest is ignored, as CGAL does (prim.off).
+  EXPECT_EQ(read_soup(write_file("more.off", head + "3 0 1 2\n3 2 1 0\n")).num_faces(), 1u);
+  expect_read_error("binary.off", "OFF\n3 1 0\n0 0 0\n1 0 " + std::string("\0\x01\x02", 3) + " 0\n",
+                    {"binary data where text was expected", 4, {}});
+  expect_read_error("binary_off.off", "OFF BINARY\n3 1 0\n", {"binary OFF is not supported", 1, {}});
+  expect_read_error("4off.off", "4OFF\n3 1 0\n", {"only 3D OFF", 1, {}});
+}
+
+TEST(IoErrors, Obj) {
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  expect_read_error("zero.obj", v + "f 0 1 2\n", {"face 0 has index 0 (OBJ indices start at 1)", 4, {}});
+  expect_read_error("range.obj", v + "f 1 2 3\nf 1 2 9\nf 1 2 4\n", {"face 1 has index 9 out of range (3 vertices)", 5, {}});
+  expect_read_error("rel.obj", v + "f -1 -2 -4\n", {"face 0 has relative index -4 out of range", 4, {}});
+  expect_read_error("two.obj", v + "f 1 2\n", {"face 0 has 2 corners (at least 3 needed)", 4, {}});
+  expect_read_error("nan.obj", "v 0 0 0\nv NaN 0 0\n", {"vertex 1 has a non-finite coordinate", 2, {}});
+  expect_read_error("malformed.obj", "v 0 0 0\nv 1 0 0,5\n", {"malformed z coordinate", 2, {}});
+  expect_read_error("short_v.obj", "v 0 0\n", {"line ends before z coordinate", 1, {}});
+  expect_read_error("bad_corner.obj", v + "f 1 2 3x\n", {"malformed vertex index", 4, {}});
+  expect_read_error("not_obj.obj", v + "1 2 3\n", {"not an OBJ statement: '1'", 4, {}});
+  // Statements other than v and f are skipped, known or not.
+  EXPECT_EQ(read_soup(write_file("vendor.obj", v + "vc 1 0 0\nfrobnicate 1 2\nf 1 2 3\n")).num_faces(), 1u);
+  expect_read_error("binary.obj", v + std::string("\x7f\x45\x4c\x46\x02\x01\x01\0\0", 9),
+                    {"binary data where text was expected", 4, {}});
+}
+
+TEST(IoErrors, Ply) {
+  const std::string h = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                        "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  expect_read_error("no_end.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n",
+                    {"missing end_header", 4, {}});
+  expect_read_error("type.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty real x\nend_header\n",
+                    {"unknown PLY type 'real'", 4, {}});
+  expect_read_error("no_vertex.ply", "ply\nformat ascii 1.0\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n",
+                    {"no vertex element", {}, {}});
+  expect_read_error("no_x.ply", "ply\nformat ascii 1.0\nelement vertex 0\nproperty float y\nend_header\n",
+                    {"no scalar 'x' property", {}, {}});
+  expect_read_error("no_list.ply", "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 0\nproperty int vertex_indices\nend_header\n", {"is not a list", {}, {}});
+  expect_read_error("format.ply", "ply\nformat binary_middle_endian 1.0\n", {"unknown PLY format", 2, {}});
+  expect_read_error("magic.ply", "plx\nformat ascii 1.0\n", {"the first line must be 'ply'", 1, {}});
+  expect_read_error("keyword.ply", "ply\nformat ascii 1.0\nelemnt vertex 3\n", {"unknown PLY header keyword 'elemnt'", 3, {}});
+  expect_read_error("trunc.ply", h + "0 0 0\n1 0 0\n", {"truncated: the header says 3 'vertex' elements, the data ends in number 2", 11, {}});
+  expect_read_error("range.ply", h + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", {"face 0 has index 3 out of range (3 vertices)", 13, {}});
+  expect_read_error("two.ply", h + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n", {"face 0 has 2 corners", 13, {}});
+  expect_read_error("inf.ply", h + "0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n", {"vertex 1 has a non-finite coordinate", 11, {}});
+  expect_read_error("float_range.ply", h + "0 0 0\n1 1e39 0\n0 1 0\n3 0 1 2\n", {"vertex 1 has a non-finite coordinate", 11, {}});
+  expect_read_error("garbage.ply", h + std::string("0 0 0\n\x01\x02\0\x03", 10), {"binary data where text was expected", 11, {}});
+
+  // Binary: offsets are 0-based byte positions in the file.
+  const std::string bh = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                         "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::uint64_t body = bh.size();
+  Bytes pts;
+  pts.text(bh);
+  for (float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) pts.le(c);
+  expect_read_error("btrunc_v.ply", pts.s.substr(0, body + 30), {"the data ends in number 2", {}, body + 24});
+  expect_read_error("btrunc_f.ply", Bytes(pts).le(std::uint8_t{3}).le(0).le(1).s,
+                    {"'face' elements, the data ends in number 0", {}, body + 36});
+  expect_read_error("brange.ply", Bytes(pts).le(std::uint8_t{3}).le(0).le(1).le(7).s,
+                    {"face 0 has index 7 out of range (3 vertices)", {}, body + 36 + 9});
+  expect_read_error("btwo.ply", Bytes(pts).le(std::uint8_t{2}).le(0).le(1).s, {"face 0 has 2 corners", {}, body + 36});
+  Bytes nan_pts;
+  nan_pts.text(bh);
+  for (float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, std::numeric_limits<float>::quiet_NaN()}) nan_pts.le(c);
+  nan_pts.le(std::uint8_t{3}).le(0).le(1).le(2);
+  expect_read_error("bnan.ply", nan_pts.s, {"vertex 2 has a non-finite coordinate", {}, body + 24});
+}
+
+TEST(IoErrors, Stl) {
+  Bytes b;
+  b.text(std::string(80, 'x')).le(std::uint32_t{2});
+  b.text(std::string(50, '\0'));
+  expect_read_error("size.stl", b.s, {"binary STL size mismatch: the header says 2 triangles, which needs 184 bytes, the file has 134 (truncated)", {}, 80});
+  expect_read_error("short.stl", std::string(40, 'x'), {"at least 84 bytes", {}, 40});
+  Bytes n;
+  n.text(std::string(80, ' ')).le(std::uint32_t{1}).le(0.f).le(0.f).le(1.f);
+  n.le(0.f).le(0.f).le(0.f).le(1.f).le(std::numeric_limits<float>::infinity()).le(0.f).le(0.f).le(1.f).le(0.f);
+  n.le(std::uint16_t{0});
+  expect_read_error("inf.stl", n.s, {"corner 1 of facet 0 has a non-finite coordinate", {}, 84 + 24});
+  const std::string facet = "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n endloop\nendfacet\n";
+  expect_read_error("keyword.stl", "solid s\n" + facet + "facet normal 0 0 1\n outer loop\n  vertx 0 0 0\n",
+                    {"expected 'vertex' or 'endloop', found 'vertx'", 11, {}});
+  expect_read_error("trunc.stl", "solid s\n" + facet + "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n",
+                    {"truncated: the file ends inside facet 1", 11, {}});
+  expect_read_error("noend.stl", "solid s\n" + facet, {"'endsolid' is missing", 8, {}});
+  expect_read_error("nan.stl", "solid s\nfacet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex nan 0 0\n",
+                    {"corner 1 of facet 0 has a non-finite coordinate", 5, {}});
+  expect_read_error("num.stl", "solid s\nfacet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 zero\n",
+                    {"malformed z coordinate", 5, {}});
+}
+
+TEST(IoErrors, EveryTruncationAndCorruptionIsAnIoErrorOrAValidSoup) {
+  Polygon_soup soup = genmesh::make_cube();
+  soup.add_point(0.125, -2.5e-3, 1e5);
+  soup.add_face({8, 0, 1});
+  std::mt19937 rng(12345);
+  for (const Round_trip_case& c : {Round_trip_case{"fz.off", false}, {"fz.obj", false}, {"fz.ply", false},
+                                   {"fz_bin.ply", true}, {"fz.stl", false}, {"fz_bin.stl", true}}) {
+    SCOPED_TRACE(c.file);
+    const std::string p = genmesh_test::tmp_path(c.file);
+    write_soup(p, soup, {.binary = c.binary});
+    const std::string full = read_bytes(p);
+    const auto try_read = [&](const std::string& content) -> bool {
+      std::ofstream(p, std::ios::binary | std::ios::trunc) << content;
+      try {
+        const Polygon_soup r = read_soup(p);
+        for (std::size_t f = 0; f < r.num_faces(); ++f) {
+          EXPECT_GE(r.face_size(f), 3u);
+          for (auto i : r.face(f)) EXPECT_LT(i, r.num_points());
+        }
+        for (const auto& q : r.points) EXPECT_TRUE(q.allFinite());
+        return true;
+      } catch (const io_error& e) {
+        EXPECT_EQ(e.file(), p);
+        EXPECT_TRUE(e.line() || e.byte_offset() || e.message().find("empty") != std::string::npos ||
+                    c.file.ends_with(".ply"))
+            << e.what();
+        return false;
+      }
+    };
+    // About 150 cuts per format (every byte near the start, where headers are).
+    const std::size_t step = std::max<std::size_t>(1, full.size() / 150);
+    for (std::size_t n = 0; n < full.size(); n += (n < 100 ? 1 : step)) {
+      const bool ok = try_read(full.substr(0, n));
+      // Binary files have exact sizes: every cut is detected.
+      if (c.binary) {
+        EXPECT_FALSE(ok) << "cut at " << n;
+      }
+    }
+    for (int k = 0; k < 150; ++k) {
+      std::string bad = full;
+      for (int j = 0; j < 3; ++j)
+        bad[std::uniform_int_distribution<std::size_t>(0, bad.size() - 1)(rng)] =
+            static_cast<char>(std::uniform_int_distribution<int>(0, 255)(rng));
+      try_read(bad);
+    }
+    EXPECT_TRUE(try_read(full));
+  }
+}
+
+// ---- writing -----------------------------------------------------------------------
+
+TEST(IoWrite, MissingDirectoryAndUnknownFormat) {
+  const std::string p = genmesh_test::tmp_path("no_such_dir/out.off");
+  expect_io_error([&] { write_soup(p, genmesh::make_cube()); }, p, {"does not exist", {}, {}});
+  EXPECT_FALSE(fs::exists(p));
+  const std::string q = genmesh_test::tmp_path("out.xyz");
+  expect_io_error([&] { write_soup(q, genmesh::make_cube()); }, q, {"unknown format", {}, {}});
+  EXPECT_FALSE(fs::exists(q));
+}
+
+TEST(IoWrite, FailedWriteLeavesExistingFileIntactAndNoTemporary) {
+  const fs::path dir = genmesh_test::tmp_path("atomic");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string p = (dir / "keep.off").string();
+  write_soup(p, genmesh::make_cube());
+  const std::string before = read_bytes(p);
+
+  // A bad index in the last face: the writer has already flushed megabytes
+  // of points and faces into the temporary file when it throws.
+  Polygon_soup bad = genmesh::make_torus(300, 200, true);
+  bad.indices.back() = static_cast<Polygon_soup::Index>(bad.num_points());
+  const std::string last = std::to_string(bad.num_faces() - 1);
+  for (const char* ext : {"keep.off", "keep.obj", "keep.ply", "keep.stl"}) {
+    const std::string target = (dir / ext).string();
+    if (!fs::exists(target)) write_soup(target, genmesh::make_cube());
+    const std::string old = read_bytes(target);
+    expect_io_error([&] { write_soup(target, bad); }, target,
+                    {"face " + last + " has index " + std::to_string(bad.num_points()) + " out of range", {}, {}});
+    EXPECT_EQ(read_bytes(target), old) << ext;
+  }
+  Polygon_soup nan_soup = genmesh::make_cube();
+  nan_soup.points[7].x() = std::nan("");
+  expect_io_error([&] { write_soup(p, nan_soup, {.format = File_format::ply, .binary = true}); }, p,
+                  {"point 7 has a non-finite coordinate", {}, {}});
+  EXPECT_EQ(read_bytes(p), before);
+  Polygon_soup far = genmesh::make_cube();
+  far.points[3].z() = 1e300;
+  expect_io_error([&] { write_soup(p, far, {.format = File_format::stl, .binary = true}); }, p,
+                  {"point 3 is out of the float range of binary STL", {}, {}});
+  EXPECT_EQ(read_bytes(p), before);
+  EXPECT_EQ(read_soup(p), genmesh::make_cube());
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 4u) << "no temporary file left behind";
+}
+
+TEST(IoWrite, OverwritesExistingFile) {
+  const std::string p = genmesh_test::tmp_path("overwrite.ply");
+  write_soup(p, genmesh::make_cube());
+  write_soup(p, genmesh::make_tetrahedron(), {.binary = true});
+  EXPECT_EQ(read_soup(p), genmesh::make_tetrahedron());
+}
+
+// ---- real meshes against CGAL::IO ----------------------------------------------------
+
+namespace {
+void expect_same_as_cgal(const std::string& path, bool exact = true) {
+  SCOPED_TRACE(path);
+  std::vector<genmesh_test::Kernel::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  ASSERT_TRUE(CGAL::IO::read_polygon_soup(path, points, polygons));
+  const Polygon_soup s = read_soup(path);
+  ASSERT_EQ(s.num_points(), points.size());
+  ASSERT_EQ(s.num_faces(), polygons.size());
+  if (!exact) return;
+  for (std::size_t v = 0; v < points.size(); ++v)
+    ASSERT_EQ(s.points[v], Eigen::Vector3d(points[v].x(), points[v].y(), points[v].z())) << "vertex " << v;
+  for (std::size_t f = 0; f < polygons.size(); ++f)
+    ASSERT_TRUE(std::equal(polygons[f].begin(), polygons[f].end(), s.face(f).begin(), s.face(f).end()))
+        << "face " << f;
+}
+} // namespace
+
+TEST(IoRealMeshes, SameAsCgal) {
+  for (const char* name : {"elephant.off", "mesh_with_colors.off", "cube_quad.off", "polygon_mesh.off",
+                           "blobby-shuffled.off", "b9.ply", "colored_tetra.ply", "sphere.ply", "sphere.stl",
+                           "pig.stl"})
+    expect_same_as_cgal(genmesh_test::real_mesh(name));
+}
+
+TEST(IoRealMeshes, EveryOffFileHasCgalCounts) {
+  const fs::path dir = fs::path(genmesh_test::real_mesh("elephant.off")).parent_path();
+  std::size_t n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.path().extension() != ".off") continue;
+    expect_same_as_cgal(e.path().string());
+    ++n;
+  }
+  EXPECT_GE(n, 100u);
+}
+
+// ---- meshes ------------------------------------------------------------------------
+
+template <class G>
+class IoMesh : public ::testing::Test {};
+TYPED_TEST_SUITE(IoMesh, genmesh_test::Backends);
+
+TYPED_TEST(IoMesh, RoundTripKeepsOrder) {
+  const Polygon_soup torus = genmesh::make_torus(8, 5);
+  const std::string in = genmesh_test::tmp_path("mesh_in.off");
+  write_soup(in, torus);
+  TypeParam g;
+  genmesh::read_mesh(in, g);
+  EXPECT_EQ(num_vertices(g), torus.num_points());
+  EXPECT_EQ(num_faces(g), torus.num_faces());
+  for (const auto& [file, binary] : {std::pair{"mesh_out.ply", true}, {"mesh_out.obj", false}}) {
+    const std::string out = genmesh_test::tmp_path(file);
+    genmesh::write_mesh(out, g, {.binary = binary});
+    const Polygon_soup back = read_soup(out);
+    EXPECT_EQ(back, genmesh::to_soup(g));
+    EXPECT_EQ(genmesh::canonical(back), genmesh::canonical(torus));
+  }
+}
+
+TYPED_TEST(IoMesh, RealMeshesHaveCgalCounts) {
+  for (const char* name : {"elephant.off", "cube_quad.off", "mech-holes-shark.off", "sphere.ply", "sphere.stl"}) {
+    SCOPED_TRACE(name);
+    const std::string p = genmesh_test::real_mesh(name);
+    genmesh_test::Surface_mesh expected;
+    ASSERT_TRUE(CGAL::IO::read_polygon_mesh(p, expected));
+    TypeParam g;
+    genmesh::read_mesh(p, g);
+    EXPECT_EQ(num_vertices(g), num_vertices(expected));
+    EXPECT_EQ(num_edges(g), num_edges(expected));
+    EXPECT_EQ(num_faces(g), num_faces(expected));
+  }
+}
+
+TYPED_TEST(IoMesh, RefusedSoupIsAnIoErrorNamingTheFile) {
+  // Three triangles on one edge (a fin): no halfedge mesh can hold it.
+  const std::string p = write_file("fin.off",
+                                   "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+  TypeParam g;
+  try {
+    genmesh::read_mesh(p, g);
+    ADD_FAILURE() << "fin accepted";
+  } catch (const io_error& e) {
+    EXPECT_EQ(e.file(), p);
+    EXPECT_FALSE(e.message().empty());
+  }
+}
+
+TYPED_TEST(IoMesh, MissingFile) {
+  TypeParam g;
+  const std::string p = genmesh_test::tmp_path("no_mesh_here.ply");
+  expect_io_error([&] { genmesh::read_mesh(p, g); }, p, {"does not exist", {}, {}});
+}
