@@ -1,0 +1,298 @@
+// genmesh/soup_to_mesh.h — halfedge meshes of any backend from polygon soups, and back.
+//
+// build_mesh(soup, g) checks the soup (check_soup), refuses it with a
+// genmesh::invalid_input naming the offending faces, edges and vertices — or,
+// with .repair = true, repairs a copy (repair_soup) — and then builds g
+// directly with the MutableFaceGraph primitives in linear time.
+//
+// Guarantees (the same on every backend, so results can be compared exactly):
+// - vertex i of the soup is the i-th vertex of g, face j the j-th face;
+//   isolated points become isolated vertices;
+// - edges are created in the order their first directed use appears (face by
+//   face, corner by corner); the halfedge created first for an edge is the one
+//   of that first use;
+// - halfedge(f, g) is the halfedge whose target is f's first corner;
+// - halfedge(v, g) is the incoming border halfedge for a border vertex (CGAL's
+//   convention) and the first incoming halfedge in corner order otherwise.
+// Works on every MutableFaceGraph with vertex points; tested on
+// genmesh::Halfedge_mesh and CGAL::Surface_mesh (compared element for element:
+// same indices, same links), CGAL::Polyhedron_3 and OpenMesh's PolyMesh.
+// Speed: ~0.25 s for 1.3M triangles with check off, plus ~0.4 s for the
+// check (one core, -O2).
+//
+// to_soup(g) numbers vertices in vertex iteration order and faces in face
+// iteration order, each face starting at its lowest-numbered vertex
+// (a rotation: the orientation is kept). canonical(soup) also sorts the faces.
+#pragma once
+
+#include <genmesh/concepts.h>
+#include <genmesh/exceptions.h>
+#include <genmesh/point_traits.h>
+#include <genmesh/polygon_soup.h>
+#include <genmesh/property_maps.h>
+#include <genmesh/validity.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace genmesh {
+
+/// How build_mesh() treats its input.
+struct Build_options {
+  bool repair = false; ///< repair a copy of a soup that fails check_soup() instead of refusing it
+  /// Run check_soup() first. Off, build_mesh() still refuses (before touching
+  /// g) what would corrupt the structure — degenerate faces, bad indices,
+  /// fins, inconsistent orientation, a bow-tie on the border — but a vertex
+  /// where several closed fans meet passes into g (check_mesh() reports it),
+  /// and nothing is repaired.
+  bool check = true;
+  Soup_repair_options repair_options = {}; ///< what the repair may change
+};
+
+/// What build_mesh() did.
+struct Build_report {
+  Soup_repair_report repair; ///< what the repair changed (empty when none was needed or asked)
+  bool repaired = false;     ///< the soup failed check_soup() and a repaired copy was built
+  std::size_t vertices = 0, edges = 0, faces = 0;
+  std::size_t border_halfedges = 0;
+  std::size_t zero_area_faces = 0; ///< warnings from check_soup() (built anyway)
+};
+
+namespace detail {
+
+inline std::string refusal(const Soup_report& r) {
+  return "build_mesh: the polygon soup cannot become a halfedge mesh (build with {.repair = true} to fix "
+         "it):\n" + to_string(r);
+}
+
+} // namespace detail
+
+/// Builds g, which must be empty, from soup; see the header comment for the
+/// guarantees. Throws genmesh::invalid_input when g is not empty, or when the
+/// soup fails check_soup() and repair is off (what() lists the problems), or
+/// when the repair could not fix everything (a Möbius strip, a NaN point).
+template <class G>
+  requires MutableFaceGraph<G> && HasVertexPoints<G>
+Build_report build_mesh(const Polygon_soup& soup, G& g, const Build_options& options = {}) {
+  using namespace detail;
+  using H = halfedge_descriptor_t<G>;
+  using V = vertex_descriptor_t<G>;
+  using F = face_descriptor_t<G>;
+  using Traits = boost::graph_traits<G>;
+
+  if (num_vertices(g) != 0 || num_faces(g) != 0 || num_halfedges(g) != 0)
+    throw invalid_input("build_mesh: the target mesh is not empty (" + std::to_string(num_vertices(g)) +
+                        " vertices, " + std::to_string(num_faces(g)) + " faces)");
+
+  Build_report report;
+  Polygon_soup repaired;
+  const Polygon_soup* in = &soup;
+  if (options.check) {
+    Soup_report r = check_soup(soup);
+    report.zero_area_faces = r.zero_area_faces;
+    if (!r.ok()) {
+      if (!options.repair) throw invalid_input(refusal(r));
+      repaired = soup;
+      report.repair = repair_soup(repaired, options.repair_options);
+      report.repaired = true;
+      if (!report.repair.ok())
+        throw invalid_input("build_mesh: the repair could not fix the polygon soup:\n" + to_string(report.repair));
+      report.zero_area_faces = report.repair.after.zero_area_faces;
+      in = &repaired;
+    }
+  }
+  const Polygon_soup& s = *in;
+  const std::size_t np = s.num_points(), nf = s.num_faces(), nc = s.indices.size();
+
+  // Pair every corner (directed edge corner → next corner) with its twin.
+  // Soup_edges groups them by undirected edge; on a checked soup a group has
+  // one or two members.
+  Soup_edges e = soup_edges(s);
+  std::vector<std::uint32_t> twin(nc, k_null);
+  std::size_t ne = 0;
+  for (std::size_t gi = 0; gi + 1 < e.group_begin.size(); ++gi) {
+    std::uint32_t b = e.group_begin[gi], end = e.group_begin[gi + 1];
+    ++ne;
+    if (end - b == 2) {
+      if (e.halves[b].forward == e.halves[b + 1].forward) throw invalid_input(refusal(check_soup(s)));
+      twin[e.halves[b].corner] = e.halves[b + 1].corner;
+      twin[e.halves[b + 1].corner] = e.halves[b].corner;
+    } else if (end - b > 2) {
+      throw invalid_input(refusal(check_soup(s)));
+    }
+  }
+
+  // The border halfedge into vertex v continues with the border halfedge out
+  // of v; the one out of v is the twin of the border corner ending at v
+  // (unique unless several border gaps meet at v: a bow-tie).
+  std::vector<std::uint32_t> border_out(np, k_null); // border corner whose twin leaves v
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (!e.usable[f]) throw invalid_input(refusal(check_soup(s)));
+    for (std::uint32_t c = s.offsets[f]; c < s.offsets[f + 1]; ++c) {
+      if (twin[c] != k_null) continue;
+      std::uint32_t v = s.indices[next_corner(s, static_cast<std::uint32_t>(f), c)];
+      if (border_out[v] != k_null) throw invalid_input(refusal(check_soup(s)));
+      border_out[v] = c;
+    }
+  }
+
+  // Nothing below throws (but for allocation): g is built whole or not at all.
+  reserve(g, static_cast<typename Traits::vertices_size_type>(np),
+          static_cast<typename Traits::edges_size_type>(ne), static_cast<typename Traits::faces_size_type>(nf));
+
+  auto points = get(vertex_point, g);
+  std::vector<V> vs;
+  vs.reserve(np);
+  for (std::size_t i = 0; i < np; ++i) {
+    V v = add_vertex(g);
+    put(points, v, from_eigen<point_t<G>>(s.points[i]));
+    vs.push_back(v);
+  }
+
+  // Halfedge of each corner c: the halfedge from corner c's vertex to the next corner's.
+  std::vector<H> hc(nc, Traits::null_halfedge());
+  for (std::size_t f = 0; f < nf; ++f) {
+    for (std::uint32_t c = s.offsets[f]; c < s.offsets[f + 1]; ++c) {
+      if (hc[c] != Traits::null_halfedge()) continue; // made with its twin
+      std::uint32_t from = s.indices[c], to = s.indices[next_corner(s, static_cast<std::uint32_t>(f), c)];
+      H h = halfedge(add_edge(g), g);
+      H o = opposite(h, g);
+      set_target(h, vs[to], g);
+      set_target(o, vs[from], g);
+      hc[c] = h;
+      if (twin[c] != k_null) hc[twin[c]] = o;
+      else set_face(o, Traits::null_face(), g);
+    }
+  }
+
+  // Faces, their cycles, and halfedge(v) = the first incoming halfedge.
+  std::vector<char> vertex_set(np, 0);
+  for (std::size_t f = 0; f < nf; ++f) {
+    F fd = add_face(g);
+    const std::uint32_t first = s.offsets[f], last = s.offsets[f + 1] - 1;
+    for (std::uint32_t c = first; c <= last; ++c) {
+      set_face(hc[c], fd, g);
+      set_next(hc[c], hc[c == last ? first : c + 1], g);
+      std::uint32_t to = s.indices[c == last ? first : c + 1];
+      if (!vertex_set[to]) {
+        vertex_set[to] = 1;
+        set_halfedge(vs[to], hc[c], g);
+      }
+    }
+    set_halfedge(fd, hc[last], g); // targets the first corner
+  }
+
+  // Border cycles; a border vertex's halfedge becomes its incoming border halfedge.
+  for (std::uint32_t c = 0; c < nc; ++c)
+    if (twin[c] == k_null) {
+      H b = opposite(hc[c], g); // from c's next corner to c's vertex v
+      std::uint32_t v = s.indices[c];
+      set_next(b, opposite(hc[border_out[v]], g), g);
+      set_halfedge(vs[v], b, g);
+      ++report.border_halfedges;
+    }
+
+  report.vertices = np;
+  report.edges = ne;
+  report.faces = nf;
+  return report;
+}
+
+/// The soup of g: vertices in vertex iteration order (isolated ones
+/// included), faces in face iteration order, each face rotated to start at
+/// its lowest-numbered vertex. Throws genmesh::invalid_input when a face cycle
+/// does not close (a corrupt mesh).
+template <class G>
+  requires FaceListGraph<G> && VertexListGraph<G> && HasVertexPoints<G>
+Polygon_soup to_soup(const G& g) {
+  using V = vertex_descriptor_t<G>;
+  using H = halfedge_descriptor_t<G>;
+  Polygon_soup s;
+  s.points.reserve(static_cast<std::size_t>(num_vertices(g)));
+  // HasVertexPoints promises get() on a non-const graph only; the map is only read.
+  auto points = get(vertex_point, const_cast<G&>(g));
+  std::vector<std::uint32_t> number;
+  std::unordered_map<V, std::uint32_t> numbers;
+  std::size_t bound = 0;
+  if constexpr (HasIndexMap<G, vertex_index_t>) {
+    bound = index_bound(vertex_index, g);
+    number.assign(bound, detail::k_null);
+  }
+  auto vindex = [&](V v) -> std::size_t {
+    if constexpr (HasIndexMap<G, vertex_index_t>) return static_cast<std::size_t>(get(get(vertex_index, g), v));
+    else return 0;
+  };
+  for (V v : vertices(g)) {
+    auto n = static_cast<std::uint32_t>(s.points.size());
+    if constexpr (HasIndexMap<G, vertex_index_t>) number[vindex(v)] = n;
+    else numbers.emplace(v, n);
+    s.points.push_back(to_eigen(get(points, v)));
+  }
+  auto num = [&](V v) -> std::uint32_t {
+    if constexpr (HasIndexMap<G, vertex_index_t>) {
+      std::size_t i = vindex(v);
+      return i < bound ? number[i] : detail::k_null;
+    } else {
+      auto it = numbers.find(v);
+      return it == numbers.end() ? detail::k_null : it->second;
+    }
+  };
+  const std::size_t max_len = static_cast<std::size_t>(num_halfedges(g));
+  std::vector<Polygon_soup::Index> c;
+  std::size_t fnum = 0;
+  s.indices.reserve(3 * static_cast<std::size_t>(num_faces(g)));
+  s.offsets.reserve(static_cast<std::size_t>(num_faces(g)) + 1);
+  for (auto f : faces(g)) {
+    c.clear();
+    H h0 = halfedge(f, g), h = h0;
+    do {
+      std::uint32_t v = num(target(h, g));
+      if (v == detail::k_null || c.size() > max_len)
+        throw invalid_input("to_soup: the cycle of face " + std::to_string(fnum) + " is corrupt");
+      c.push_back(v);
+      h = next(h, g);
+    } while (h != h0);
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+    s.add_face(c);
+    ++fnum;
+  }
+  return s;
+}
+
+/// soup with every face rotated to start at its lowest corner (orientation kept).
+inline Polygon_soup rotate_faces_to_lowest(Polygon_soup soup) {
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    auto c = soup.face(f);
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+  }
+  return soup;
+}
+
+/// soup with faces rotated to start at their lowest corner and sorted
+/// lexicographically; points untouched. Two meshes with equal canonical soups
+/// have the same points, the same faces and the same orientations.
+inline Polygon_soup canonical(Polygon_soup soup) {
+  soup = rotate_faces_to_lowest(std::move(soup));
+  std::vector<std::size_t> order(soup.num_faces());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    auto x = soup.face(a), y = soup.face(b);
+    return std::lexicographical_compare(x.begin(), x.end(), y.begin(), y.end());
+  });
+  Polygon_soup out;
+  out.points = std::move(soup.points);
+  out.indices.reserve(soup.indices.size());
+  out.offsets.reserve(soup.offsets.size());
+  for (auto f : order) out.add_face(soup.face(f));
+  return out;
+}
+
+} // namespace genmesh
