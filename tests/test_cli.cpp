@@ -3,7 +3,7 @@
 // whose counts equal CGAL's on the same file, on every backend.
 #include "backends.h"
 
-#include <CGAL/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
@@ -23,14 +23,14 @@ namespace {
 using genmesh_test::real_mesh;
 using genmesh_test::tmp_path;
 
-struct Run {
+struct Cli_run {
   int exit_code;
   std::string out;  // stdout
   std::string err;  // stderr
 };
 
 // Runs the genmesh program with `args` (already shell-quoted where needed).
-Run genmesh(const std::string& args) {
+Cli_run genmesh(const std::string& args) {
   const std::string err_file = tmp_path("cli_stderr.txt");
   const std::string cmd = std::string(GENMESH_CLI) + " " + args + " 2>" + err_file;
   FILE* pipe = popen(cmd.c_str(), "r");
@@ -72,13 +72,13 @@ std::string read_file(const std::string& path) {
 }
 
 TEST(Cli, DemoRunsEveryBackendAndTheyAgree) {
-  Run r = genmesh("demo");
+  Cli_run r = genmesh("demo");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("all backends agree"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("surface-mesh"), std::string::npos);
   EXPECT_EQ(r.out.find("DIFFERS"), std::string::npos) << r.out;
 
-  Run j = genmesh("demo --json");
+  Cli_run j = genmesh("demo --json");
   EXPECT_EQ(j.exit_code, 0);
   std::istringstream lines(j.out);
   int records = 0;
@@ -96,11 +96,14 @@ TEST(Cli, InfoCountsEqualCgalOnRealMeshes) {
     std::vector<genmesh_test::Surface_mesh::Halfedge_index> cycles;
     CGAL::Polygon_mesh_processing::extract_boundary_cycles(sm, std::back_inserter(cycles));
     auto fcc = sm.add_property_map<genmesh_test::Surface_mesh::Face_index, std::size_t>("f:cc").first;
-    const std::size_t components = CGAL::Polygon_mesh_processing::connected_components(sm, fcc);
+    // genmesh counts an isolated vertex as a component of its own (so that
+    // χ = V − E + F sums over components); CGAL counts face components only.
+    std::size_t components = CGAL::Polygon_mesh_processing::connected_components(sm, fcc);
+    for (auto v : sm.vertices()) components += sm.is_isolated(v) ? 1 : 0;
 
     for (const char* backend : {"halfedge", "surface-mesh"}) {
       SCOPED_TRACE(std::string(name) + " on " + backend);
-      Run r = genmesh("info --json --backend " + std::string(backend) + " " + path);
+      Cli_run r = genmesh("info --json --backend " + std::string(backend) + " " + path);
       ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
       EXPECT_EQ(json_int(r.out, "vertices"), static_cast<long long>(sm.number_of_vertices()));
       EXPECT_EQ(json_int(r.out, "edges"), static_cast<long long>(sm.number_of_edges()));
@@ -128,7 +131,7 @@ TEST(Cli, CheckRefusesNonManifoldWithExitOne) {
   const std::string path = tmp_path("fin.off");
   write_file(path, "OFF\n5 3 0\n0 0 0\n0 -1 0\n0 1 1\n-1 0 1\n1 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
   for (const char* backend : {"halfedge", "surface-mesh"}) {
-    Run r = genmesh(std::string("check --backend ") + backend + " " + path);
+    Cli_run r = genmesh(std::string("check --backend ") + backend + " " + path);
     EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
     EXPECT_NE(r.out.find("non-manifold"), std::string::npos) << r.out;
   }
@@ -138,9 +141,9 @@ TEST(Cli, CheckRepairsABowTie) {
   // Two triangles touching at vertex 0 only.
   const std::string path = tmp_path("bowtie.off");
   write_file(path, "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n-1 0 0\n-1 -1 0\n3 0 1 2\n3 0 3 4\n");
-  Run refused = genmesh("check " + path);
+  Cli_run refused = genmesh("check " + path);
   EXPECT_EQ(refused.exit_code, 1) << refused.out << refused.err;
-  Run repaired = genmesh("info --json --repair " + path);
+  Cli_run repaired = genmesh("info --json --repair " + path);
   EXPECT_EQ(repaired.exit_code, 0) << repaired.out << repaired.err;
   EXPECT_EQ(json_int(repaired.out, "vertices"), 6);  // the bow-tie vertex is split in two
   EXPECT_EQ(json_int(repaired.out, "components"), 2);
@@ -149,18 +152,18 @@ TEST(Cli, CheckRepairsABowTie) {
 TEST(Cli, BadInputExitsTwoNamingFileAndLine) {
   const std::string path = tmp_path("truncated.off");
   write_file(path, "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n");  // one vertex and both faces missing
-  Run r = genmesh("info " + path);
+  Cli_run r = genmesh("info " + path);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find(path), std::string::npos) << r.err;
   EXPECT_TRUE(std::regex_search(r.err, std::regex(":[0-9]+:"))) << "no line number: " << r.err;
 
-  Run missing = genmesh("check " + tmp_path("does-not-exist.off"));
+  Cli_run missing = genmesh("check " + tmp_path("does-not-exist.off"));
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find("does-not-exist.off"), std::string::npos) << missing.err;
 
   const std::string nan_path = tmp_path("nan.off");
   write_file(nan_path, "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n");
-  Run nan = genmesh("check " + nan_path);
+  Cli_run nan = genmesh("check " + nan_path);
   EXPECT_EQ(nan.exit_code, 2) << nan.out;
   EXPECT_NE(nan.err.find("nan.off"), std::string::npos) << nan.err;
 }
@@ -168,7 +171,7 @@ TEST(Cli, BadInputExitsTwoNamingFileAndLine) {
 TEST(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(genmesh("").exit_code, 2);
   EXPECT_EQ(genmesh("frobnicate").exit_code, 2);
-  Run r = genmesh("info --backend nonsense " + real_mesh("cube.off"));
+  Cli_run r = genmesh("info --backend nonsense " + real_mesh("cube.off"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("nonsense"), std::string::npos) << r.err;
   EXPECT_EQ(genmesh("info").exit_code, 2);
@@ -177,16 +180,16 @@ TEST(Cli, UsageErrorsExitTwo) {
 
 TEST(Cli, ConvertRoundTripsThroughEveryFormat) {
   const std::string in = real_mesh("elephant.off");
-  Run ref = genmesh("info --json " + in);
+  Cli_run ref = genmesh("info --json " + in);
   ASSERT_EQ(ref.exit_code, 0) << ref.err;
   std::string current = in;
   for (std::string out : {"e.ply", "e_bin.ply", "e.obj", "e.stl", "e_bin.stl", "e.off"}) {
     const std::string path = tmp_path(out);
     std::filesystem::remove(path);
     const bool binary = out.find("_bin") != std::string::npos;
-    Run c = genmesh("convert " + current + " " + path + (binary ? " --binary" : ""));
+    Cli_run c = genmesh("convert " + current + " " + path + (binary ? " --binary" : ""));
     ASSERT_EQ(c.exit_code, 0) << out << ": " << c.out << c.err;
-    Run info = genmesh("info --json " + path);
+    Cli_run info = genmesh("info --json " + path);
     ASSERT_EQ(info.exit_code, 0) << out << ": " << info.err;
     for (const char* key : {"vertices", "edges", "faces", "boundary_loops", "euler_characteristic"})
       EXPECT_EQ(json_int(info.out, key), json_int(ref.out, key)) << out << " " << key;
@@ -199,11 +202,11 @@ TEST(Cli, FailedConvertLeavesExistingOutputIntact) {
   write_file(out, "precious");
   const std::string bad = tmp_path("bad_index.off");
   write_file(bad, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");  // index 7 out of range
-  Run r = genmesh("convert " + bad + " " + out);
+  Cli_run r = genmesh("convert " + bad + " " + out);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(read_file(out), "precious");
 
-  Run nodir = genmesh("convert " + real_mesh("cube.off") + " " + tmp_path("no/such/dir/x.off"));
+  Cli_run nodir = genmesh("convert " + real_mesh("cube.off") + " " + tmp_path("no/such/dir/x.off"));
   EXPECT_EQ(nodir.exit_code, 2);
   EXPECT_NE(nodir.err.find("x.off"), std::string::npos) << nodir.err;
 }

@@ -201,9 +201,9 @@ int cmd_info_or_check(const Args& a) {
     } else {
       print_counts(file, a.backend, report, seconds);
       if (a.repair) std::cout << genmesh::to_string(build.repair);
-      if (a.command == "check" || !report.valid) std::cout << genmesh::to_string(report);
+      if (a.command == "check" || !report.ok()) std::cout << genmesh::to_string(report);
     }
-    return report.valid ? exit_ok : exit_invalid;
+    return report.ok() ? exit_ok : exit_invalid;
   });
 }
 
@@ -214,7 +214,7 @@ int cmd_convert(const Args& a) {
     genmesh::Build_report build = genmesh::build_mesh(soup, mesh, {.repair = a.repair});
     genmesh::Mesh_report report = genmesh::check_mesh(mesh);
     const double seconds = seconds_since(t0);
-    if (!report.valid) {
+    if (!report.ok()) {
       std::cout << genmesh::to_string(report);
       return exit_invalid;
     }
@@ -277,7 +277,7 @@ int cmd_demo(const Args& a) {
     for (const Demo_row& r : rows) {
       // The reference is the first backend; every other must give the same soup.
       const bool same = r.result == rows.front().result && r.result.num_faces() == soup.num_faces();
-      all_ok = all_ok && same && r.report.valid;
+      all_ok = all_ok && same && r.report.ok();
       if (a.json) {
         std::cout << "{\"command\":\"demo\",\"mesh\":\"" << r.mesh << "\",\"step\":\"" << r.step
                   << "\",\"backend\":\"" << r.backend << "\"," << json_counts(r.report)
@@ -290,7 +290,7 @@ int cmd_demo(const Args& a) {
                     static_cast<long long>(r.report.euler_characteristic),
                     std::size_t(r.report.boundary_loops),
                     r.report.genus ? std::to_string(*r.report.genus).c_str() : "n/a",
-                    r.report.valid ? "yes" : "NO", same ? "yes" : "DIFFERS", r.seconds);
+                    r.report.ok() ? "yes" : "NO", same ? "yes" : "DIFFERS", r.seconds);
       }
     }
   }

@@ -315,7 +315,12 @@ public:
       throw io_error(name_, "cannot write: it is a directory");
     std::random_device rd;
     for (int attempt = 0; attempt < 16 && !fp_; ++attempt) {
-      temp_ = dir / ("." + target.filename().string() + ".tmp" + std::to_string(rd() % 1000000));
+      // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
+      std::string temp_name(1, '.');
+      temp_name += target.filename().string();
+      temp_name += ".tmp";
+      temp_name += std::to_string(rd() % 1000000);
+      temp_ = dir / temp_name;
       // "x": fail rather than clobber if the name is taken.
       fp_ = std::fopen(temp_.string().c_str(), "wbx");
       if (!fp_ && errno != EEXIST) break;
