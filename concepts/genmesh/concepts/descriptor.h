@@ -11,10 +11,15 @@
 //   translate).
 // - null_halfedge(), null_face(), null_vertex() come from
 //   boost::graph_traits<G>; a border halfedge has face(h, g) == null_face().
-// - num_vertices(g) (and num_edges, num_halfedges, num_faces) count *live*
-//   elements. Scratch arrays are sized by an index bound and indexed through an
-//   index property map; never infer one from the other (a mesh with removed,
-//   not yet collected elements has indices >= its live count).
+// - Live count and index bound are two functions. Scratch arrays are sized by
+//   index_bound(genmesh::vertex_index, g) and indexed through
+//   get(genmesh::vertex_index, g) (<genmesh/property_maps.h>); never infer one
+//   from the other (a mesh with removed, not yet collected elements has
+//   indices >= its live count). num_vertices(g) (and num_edges, num_halfedges,
+//   num_faces) count live elements on genmesh's meshes, but CGAL's
+//   Surface_mesh and OpenMesh return their index bound there (CGAL's BGL only
+//   promises an upper bound), so generic genmesh code uses num_* for neither:
+//   it counts by iterating vertices(g) when it needs the live count.
 #pragma once
 
 #include <concepts>
