@@ -384,6 +384,16 @@ inline void append_double(std::string& out, double v, int precision) {
   out.append(b, r.ptr);
 }
 
+/// Appends "x y z\n" (text formats' vertex lines).
+inline void append_point(std::string& out, const Eigen::Vector3d& p, int precision) {
+  append_double(out, p.x(), precision);
+  out += ' ';
+  append_double(out, p.y(), precision);
+  out += ' ';
+  append_double(out, p.z(), precision);
+  out += '\n';
+}
+
 template <class I>
 void append_int(std::string& out, I v) {
   char b[24];

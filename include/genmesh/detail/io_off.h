@@ -102,12 +102,7 @@ inline void write_off(Atomic_file& out, const Polygon_soup& soup, int precision)
   for (std::size_t v = 0; v < soup.num_points(); ++v) {
     check_point_for_write(soup, v, out.name());
     const auto& p = soup.points[v];
-    append_double(b, p.x(), precision);
-    b += ' ';
-    append_double(b, p.y(), precision);
-    b += ' ';
-    append_double(b, p.z(), precision);
-    b += '\n';
+    append_point(b, p, precision);
     out.flush_if_large();
   }
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {

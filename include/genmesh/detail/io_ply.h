@@ -380,12 +380,7 @@ inline void write_ply(Atomic_file& out, const Polygon_soup& soup, bool binary, i
       store_le(b, p.y());
       store_le(b, p.z());
     } else {
-      append_double(b, p.x(), precision);
-      b += ' ';
-      append_double(b, p.y(), precision);
-      b += ' ';
-      append_double(b, p.z(), precision);
-      b += '\n';
+      append_point(b, p, precision);
     }
     out.flush_if_large();
   }
