@@ -1,0 +1,968 @@
+// genmesh/local_operations.h — the local operations: the only way genmesh
+// algorithms change a mesh.
+//
+// flip_edge, split_edge, split_edge_and_triangulate, collapse_edge,
+// split_face, join_face, add_center_vertex, remove_center_vertex,
+// euler::add_face, euler::remove_face, triangulate_face(s), and the modelling
+// operations erase_vertex, erase_edge, bevel_vertex, bevel_face; each with a
+// can_… predicate, generic over any MutableFaceGraph (written with set_next,
+// set_target, set_face, set_halfedge, add_*/remove_*).
+//
+// Guarantees:
+// - Checked: every operation first decides, from the mesh as it is, whether
+//   it keeps a valid 2-manifold halfedge mesh; if not it returns an empty
+//   result (std::nullopt, or false) and the mesh is bit-for-bit untouched.
+//   All checks run before the first edit.
+// - CGAL's conventions: each operation takes the descriptor CGAL::Euler's
+//   operation of the same name takes and returns, wrapped in std::optional,
+//   what CGAL::Euler returns (where CGAL returns void: flip_edge returns h,
+//   remove_face a bool). Where CGAL::Euler has the operation, the
+//   low-level edits are the same, in the same order, so on Halfedge_mesh and
+//   CGAL::Surface_mesh (which allocate indices identically) the result equals
+//   CGAL::Euler's element for element: same indices, same links, same
+//   halfedge(v) and halfedge(f) choices, same free-list order. The tests
+//   compare every array with CGAL::Euler's.
+// - Deterministic: the same operations on the same input give the same
+//   mesh on every backend.
+// - No allocation per operation, except add_face, bevel_face and
+//   bevel_vertex with more than 8 corners, and triangulate_faces (one list).
+// - A visitor (<genmesh/visitor.h>) is called after each successful change
+//   (its before_* hooks just before); never on a refusal.
+// - The operations are function objects (see the end of this header), so
+//   argument-dependent lookup never finds them: CGAL's unqualified calls on a
+//   genmesh mesh stay CGAL's. add_face(vertices, g) and remove_face(h, g) are
+//   spelled genmesh::euler::add_face / remove_face, because genmesh::add_face(g)
+//   and remove_face(f, g) are Halfedge_mesh's MutableFaceGraph primitives.
+//
+// Limits:
+// - bevel_edge is not there yet.
+// - The input must be a valid, manifold halfedge mesh (check_mesh(g).ok());
+//   the checks guard against what the operation would break, not against a
+//   corrupt input.
+// - Geometry: split_edge and split_edge_and_triangulate put the new vertex at
+//   the edge midpoint and add_center_vertex at the face centroid (CGAL::Euler
+//   leaves the point unset); collapse_edge keeps the surviving vertex's point.
+//   No operation looks at geometry to refuse (no fold-over test): that is the
+//   caller's constraint.
+// - flip_edge rotates the edge as CGAL does (one vertex forward in the face
+//   orientation), so flipping twice gives the same mesh with the edge's two
+//   halfedges (and its two faces) exchanged; four flips restore next, prev,
+//   target and face exactly (tested). An exact two-flip restore would need a
+//   flip that rotates backward every other time, which no fixed convention
+//   can do.
+#pragma once
+
+#include <genmesh/concepts.h>
+#include <genmesh/detail/local_operations_primitives.h>
+#include <genmesh/point_traits.h>
+#include <genmesh/property_maps.h>
+#include <genmesh/visitor.h>
+
+#include <boost/container/small_vector.hpp>
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cstddef>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace genmesh {
+
+namespace detail::lo {
+
+template <class G>
+void set_midpoint(V<G> v, V<G> a, V<G> b, G& g) {
+  if constexpr (HasVertexPoints<G>) {
+    auto pm = get(vertex_point, g);
+    using P = point_t<G>;
+    const Eigen::Vector3d m = 0.5 * (to_eigen(P(get(pm, a))) + to_eigen(P(get(pm, b))));
+    put(pm, v, from_eigen<P>(m));
+  }
+}
+
+// Puts v at the centroid of the corners of face(h).
+template <class G>
+void set_centroid(V<G> v, H<G> h, G& g) {
+  if constexpr (HasVertexPoints<G>) {
+    auto pm = get(vertex_point, g);
+    using P = point_t<G>;
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    int n = 0;
+    H<G> x = h;
+    do {
+      c += to_eigen(P(get(pm, target(x, g))));
+      ++n;
+      x = next(x, g);
+    } while (x != h);
+    put(pm, v, from_eigen<P>(c / n));
+  }
+}
+
+// ---------------------------------------------------------------------------
+// flip_edge
+// ---------------------------------------------------------------------------
+
+/// Whether flip_edge(h, g) would flip: both sides of h are triangles (not
+/// holes), their opposite corners differ and are not already joined by an
+/// edge, and neither end of h is an inner vertex of degree 3 (it would be
+/// left with two edges). A border end may be left with two (a corner).
+template <MutableFaceGraph G>
+bool can_flip_edge(halfedge_descriptor_t<G> h, const G& g) {
+  namespace lo = detail::lo;
+  const auto oh = opposite(h, g);
+  if (lo::border(h, g) || lo::border(oh, g)) return false;
+  if (!lo::triangle_at(h, g) || !lo::triangle_at(oh, g)) return false;
+  const auto s2 = target(next(h, g), g), t2 = target(next(oh, g), g);
+  if (s2 == t2) return false;
+  if (lo::find_halfedge(s2, t2, g) != lo::null_h<G>()) return false;
+  // The ends lose an edge: an inner end of degree 3 would be left with 2
+  // (possible next to non-triangles; around triangles only, the new edge
+  // would exist already).
+  for (const auto v : {source(h, g), target(h, g)})
+    if (lo::degree_below(v, 4, g) && !lo::border_vertex(v, g)) return false;
+  return true;
+}
+
+/// Flips the edge of h inside the quadrilateral of its two triangles, as
+/// CGAL::Euler::flip_edge: the edge rotates by one vertex in the direction of
+/// the face orientation. Before: h goes s → t, next(h) ends at s2, next(opposite(h))
+/// at t2. After: h goes s2 → t2, face(h) and face(opposite(h)) are kept
+/// (face(h) = (s2, t2, t), halfedge(face(h)) == h), halfedge(s) and
+/// halfedge(t) move off the edge if they were on it. Creates and removes
+/// nothing.
+/// \returns h, or nullopt (refused, see can_flip_edge).
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+std::optional<halfedge_descriptor_t<G>> flip_edge(halfedge_descriptor_t<G> h, G& g, Visitor&& visitor = {}) {
+  if (!can_flip_edge(h, g)) return std::nullopt;
+  const auto s = source(h, g), t = target(h, g);
+  const auto nh = next(h, g), nnh = next(nh, g), oh = opposite(h, g), noh = next(oh, g), nnoh = next(noh, g);
+  const auto s2 = target(nh, g), t2 = target(noh, g);
+  const auto fh = face(h, g), foh = face(oh, g);
+  if (halfedge(s, g) == oh) set_halfedge(s, nnh, g);
+  if (halfedge(t, g) == h) set_halfedge(t, nnoh, g);
+  set_next(h, nnoh, g);
+  set_next(oh, nnh, g);
+  set_target(h, t2, g);
+  set_target(oh, s2, g);
+  set_next(nh, h, g);
+  set_next(noh, oh, g);
+  set_next(nnoh, nh, g);
+  set_next(nnh, noh, g);
+  set_face(nnoh, fh, g);
+  set_face(nnh, foh, g);
+  set_halfedge(fh, h, g);
+  set_halfedge(foh, oh, g);
+  visitor.on_flip(h, std::as_const(g));
+  return h;
+}
+
+// ---------------------------------------------------------------------------
+// split_edge, split_edge_and_triangulate
+// ---------------------------------------------------------------------------
+
+/// True for any halfedge of a valid mesh (false for the null halfedge): an
+/// edge can always be split.
+template <MutableFaceGraph G>
+bool can_split_edge(halfedge_descriptor_t<G> h, const G& /*g*/) {
+  return h != detail::lo::null_h<G>();
+}
+
+/// Inserts a new vertex w on the edge of h (u → v), as CGAL::Euler::split_edge:
+/// one new vertex, one new edge; the faces on both sides get one more side.
+/// \returns hnew, going u → w, with next(hnew) == h (h now goes w → v) and
+/// face(hnew) == face(h); opposite(hnew) follows opposite(h). As CGAL sets
+/// them, halfedge(w) == hnew and halfedge(u) == opposite(hnew) (even if u is
+/// a border vertex and opposite(hnew) is not a border halfedge).
+/// w is placed at the midpoint of u and v.
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+std::optional<halfedge_descriptor_t<G>> split_edge(halfedge_descriptor_t<G> h, G& g, Visitor&& visitor = {}) {
+  if (!can_split_edge(h, g)) return std::nullopt;
+  // In a valid mesh next(prev(h)) == h, face(prev(h)) == face(h) and
+  // target(prev(h)) == target(opposite(h)): read those instead (fewer cache lines).
+  const auto h1 = prev(h, g), h2 = opposite(h, g);
+  const auto u = target(h2, g), v = target(h, g);
+  const auto fh = face(h, g);
+  const auto hnew = halfedge(add_edge(g), g);
+  const auto hnewopp = opposite(hnew, g);
+  const auto w = add_vertex(g);
+  // CGAL: opposite(split_vertex(prev(h), opposite(h))).
+  set_next(hnew, next(h2, g), g);
+  set_next(h2, hnew, g);
+  set_face(hnew, face(h2, g), g);
+  set_next(hnewopp, h, g);
+  set_next(h1, hnewopp, g);
+  set_face(hnewopp, fh, g);
+  set_target(hnew, u, g);
+  set_target(hnewopp, w, g);
+  set_target(h2, w, g);
+  set_halfedge(u, hnew, g);
+  set_halfedge(w, hnewopp, g);
+  detail::lo::set_midpoint(w, u, v, g);
+  visitor.on_split_edge(hnewopp, std::as_const(g));
+  return hnewopp;
+}
+
+/// Whether split_edge_and_triangulate(h, g) applies: every face on either
+/// side of h is a triangle.
+template <MutableFaceGraph G>
+bool can_split_edge_and_triangulate(halfedge_descriptor_t<G> h, const G& g) {
+  namespace lo = detail::lo;
+  if (!can_split_edge(h, g)) return false;
+  const auto oh = opposite(h, g);
+  if (lo::border(h, g) && lo::border(oh, g)) return false;
+  return (lo::border(h, g) || lo::triangle_at(h, g)) && (lo::border(oh, g) || lo::triangle_at(oh, g));
+}
+
+/// The triangle-mesh edge split: a new vertex w at the midpoint of the edge of
+/// h (u → v), joined to the opposite corner of each incident triangle, so
+/// two triangles become four (one becomes two on the boundary). split_edge,
+/// then split_face on the side of h, then on the other side.
+/// \returns hnew (u → w, next(hnew) == h, as split_edge), or nullopt if a side
+/// of h is not a triangle.
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+std::optional<halfedge_descriptor_t<G>> split_edge_and_triangulate(halfedge_descriptor_t<G> h, G& g,
+                                                                   Visitor&& visitor = {}) {
+  namespace lo = detail::lo;
+  if (!can_split_edge_and_triangulate(h, g)) return std::nullopt;
+  const auto oh = opposite(h, g);
+  const bool side_h = !lo::border(h, g), side_oh = !lo::border(oh, g);
+  Mutation_visitor quiet;
+  const auto hnew = *split_edge(h, g, quiet);
+  // Now hnew: u → w, h: w → v; oh: v → w, opposite(hnew): w → u.
+  if (side_h) lo::split_face_raw(hnew, next(h, g), g);
+  if (side_oh) lo::split_face_raw(oh, next(opposite(hnew, g), g), g);
+  visitor.on_split_edge(hnew, std::as_const(g));
+  return hnew;
+}
+
+// ---------------------------------------------------------------------------
+// collapse_edge
+// ---------------------------------------------------------------------------
+
+/// The link condition of CGAL::Euler::does_satisfy_link_condition (Dey et
+/// al. 1999): every vertex adjacent to both ends of e forms a face with e; no
+/// isolated triangle; not both ends on the border when e is inner; not an
+/// edge of a tetrahedron or of a two-triangle pillow.
+template <MutableFaceGraph G>
+bool does_satisfy_link_condition(edge_descriptor_t<G> e, const G& g) {
+  namespace lo = detail::lo;
+  const auto pq = halfedge(e, g), qp = opposite(pq, g);
+  const auto p = target(qp, g), q = target(pq, g);
+  const auto vl = target(next(pq, g), g), vr = target(next(qp, g), g);
+  const bool top = !lo::border(pq, g), bottom = !lo::border(qp, g);
+  // Common neighbours of p and q must be the opposite corners of e's faces.
+  const auto start = halfedge(p, g);
+  auto x = start;
+  do {
+    const auto k = source(x, g);
+    if (k != q && !((k == vl && top) || (k == vr && bottom)) && lo::find_halfedge(k, q, g) != lo::null_h<G>())
+      return false;
+    x = opposite(next(x, g), g);
+  } while (x != start);
+  if (top && lo::border(opposite(next(pq, g), g), g) && lo::border(opposite(prev(pq, g), g), g)) return false;
+  if (bottom && lo::border(opposite(next(qp, g), g), g) && lo::border(opposite(prev(qp, g), g), g)) return false;
+  if (top && bottom) {
+    if (lo::border_vertex(p, g) && lo::border_vertex(q, g)) return false;
+    if (lo::tetrahedron_at(pq, g)) return false;
+    if (next(pq, g) == opposite(prev(qp, g), g) && prev(pq, g) == opposite(next(qp, g), g)) return false;
+  }
+  return true;
+}
+
+/// Whether collapse_edge(e, g) would collapse: the faces of e are triangles
+/// (holes allowed on one side), e is not an isolated edge, the link condition
+/// holds, and each opposite corner keeps at least two edges.
+template <MutableFaceGraph G>
+bool can_collapse_edge(edge_descriptor_t<G> e, const G& g) {
+  namespace lo = detail::lo;
+  const auto pq = halfedge(e, g), qp = opposite(pq, g);
+  const bool top = !lo::border(pq, g), bottom = !lo::border(qp, g);
+  if (!top && !bottom) return false;
+  if (top && (!lo::triangle_at(pq, g) || lo::vertex_degree(target(next(pq, g), g), g) <= 2)) return false;
+  if (bottom && (!lo::triangle_at(qp, g) || lo::vertex_degree(target(next(qp, g), g), g) <= 2)) return false;
+  return does_satisfy_link_condition(e, g);
+}
+
+/// Collapses e into its target, as CGAL::Euler::collapse_edge: with pq =
+/// halfedge(e, g), p = source(pq) and q = target(pq), removes p, e, the
+/// (one or two) triangles of e and, in each, the edge at p (pt on top, merged
+/// into tq; qb at the bottom, merged into bp), in CGAL's order. Halfedges that
+/// had p as target now have q. q keeps its point.
+/// \returns q, or nullopt (refused, see can_collapse_edge).
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+std::optional<vertex_descriptor_t<G>> collapse_edge(edge_descriptor_t<G> e, G& g, Visitor&& visitor = {}) {
+  namespace lo = detail::lo;
+  if (!can_collapse_edge(e, g)) return std::nullopt;
+  const auto pq = halfedge(e, g), qp = opposite(pq, g);
+  visitor.before_collapse(pq, std::as_const(g));
+  const auto pt = opposite(prev(pq, g), g), qb = opposite(prev(qp, g), g);
+  const bool top = !lo::border(pq, g), bottom = !lo::border(qp, g);
+  const bool top_left = top && !lo::border(pt, g), bottom_right = bottom && !lo::border(qb, g);
+  const auto q = target(pq, g), p = source(pq, g);
+  bool p_erased = false;
+  if (top) {
+    if (top_left) {
+      lo::join_face_raw(pt, g);
+    } else {
+      lo::remove_face_raw(opposite(pt, g), g);
+      if (!bottom) p_erased = true;
+    }
+  }
+  if (bottom) {
+    if (bottom_right) {
+      lo::join_face_raw(qb, g);
+    } else {
+      if (!top) {
+        p_erased = true;
+        // q's descriptor must survive: remove_face frees the isolated one.
+        lo::swap_vertices_raw(p, q, g);
+      }
+      lo::remove_face_raw(opposite(qb, g), g);
+    }
+  }
+  if (!p_erased) lo::join_vertex_raw(pq, g);
+  visitor.on_collapse(q, std::as_const(g));
+  return q;
+}
+
+// ---------------------------------------------------------------------------
+// split_face, join_face
+// ---------------------------------------------------------------------------
+
+/// Whether split_face(h1, h2, g) would split: h1 != h2 on the same face (not
+/// a hole), not consecutive, and no edge joins their targets yet.
+template <MutableFaceGraph G>
+bool can_split_face(halfedge_descriptor_t<G> h1, halfedge_descriptor_t<G> h2, const G& g) {
+  namespace lo = detail::lo;
+  if (h1 == h2 || lo::border(h1, g) || face(h1, g) != face(h2, g)) return false;
+  if (next(h1, g) == h2 || next(h2, g) == h1) return false;
+  return lo::find_halfedge(target(h1, g), target(h2, g), g) == lo::null_h<G>();
+}
+
+/// Splits face(h1) by a new edge from target(h1) to target(h2), as
+/// CGAL::Euler::split_face: one new edge, one new face.
+/// \returns h3, with next(h1) == h3, going target(h1) → target(h2); face(h3)
+/// is the old face, the new face is face(opposite(h3)) (next(h2) ==
+/// opposite(h3)). Or nullopt (see can_split_face).
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+std::optional<halfedge_descriptor_t<G>> split_face(halfedge_descriptor_t<G> h1, halfedge_descriptor_t<G> h2, G& g,
+                                                   Visitor&& visitor = {}) {
+  if (!can_split_face(h1, h2, g)) return std::nullopt;
+  const auto h3 = detail::lo::split_face_raw(h1, h2, g);
+  visitor.on_split_face(h3, std::as_const(g));
+  return h3;
+}
+
+/// Whether join_face(h, g) would join: the two sides of h are different faces
+/// (at most one a hole) and both ends of h keep at least two edges.
+template <MutableFaceGraph G>
+bool can_join_face(halfedge_descriptor_t<G> h, const G& g) {
+  namespace lo = detail::lo;
+  const auto oh = opposite(h, g);
+  if (lo::border(h, g) && lo::border(oh, g)) return false;
+  if (face(h, g) == face(oh, g)) return false;
+  return lo::vertex_degree(source(h, g), g) >= 3 && lo::vertex_degree(target(h, g), g) >= 3;
+}
+
+/// Removes the edge of h, merging face(opposite(h)) into face(h), as
+/// CGAL::Euler::join_face (if face(h) is a hole, face(opposite(h)) joins the
+/// hole). Removes one edge and one face.
+/// \returns prev(h) (taken before the join), or nullopt (see can_join_face).
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+std::optional<halfedge_descriptor_t<G>> join_face(halfedge_descriptor_t<G> h, G& g, Visitor&& visitor = {}) {
+  if (!can_join_face(h, g)) return std::nullopt;
+  visitor.before_join_face(h, std::as_const(g));
+  return detail::lo::join_face_raw(h, g);
+}
+
+// ---------------------------------------------------------------------------
+// add_center_vertex, remove_center_vertex
+// ---------------------------------------------------------------------------
+
+/// Whether add_center_vertex(h, g) applies: h is not a border halfedge.
+template <MutableFaceGraph G>
+bool can_add_center_vertex(halfedge_descriptor_t<G> h, const G& g) {
+  return !detail::lo::border(h, g);
+}
+
+/// Adds a vertex c inside face(h) joined to every corner, as
+/// CGAL::Euler::add_center_vertex: an n-gon becomes n triangles (one new
+/// vertex, n new edges, n − 1 new faces; face(h) is kept for h's triangle).
+/// c is placed at the centroid of the corners.
+/// \returns the new halfedge from target(h) to c (next(h) == it), or nullopt.
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+std::optional<halfedge_descriptor_t<G>> add_center_vertex(halfedge_descriptor_t<G> h, G& g,
+                                                          Visitor&& visitor = {}) {
+  if (!can_add_center_vertex(h, g)) return std::nullopt;
+  const auto f = face(h, g);
+  const auto hnew = halfedge(add_edge(g), g);
+  const auto vnew = add_vertex(g);
+  detail::lo::set_centroid(vnew, h, g);
+  set_next(hnew, opposite(hnew, g), g);
+  set_target(hnew, vnew, g);
+  set_halfedge(vnew, hnew, g);
+  set_next(opposite(hnew, g), next(h, g), g);
+  set_next(h, hnew, g);
+  set_target(opposite(hnew, g), target(h, g), g);
+  set_face(hnew, f, g);
+  set_halfedge(f, h, g);
+  auto h2 = next(opposite(hnew, g), g);
+  while (next(h2, g) != hnew) {
+    const auto gnew = halfedge(add_edge(g), g);
+    set_next(gnew, next(hnew, g), g);
+    set_next(hnew, opposite(gnew, g), g);
+    set_target(gnew, target(hnew, g), g);
+    set_next(opposite(gnew, g), next(h2, g), g);
+    set_next(h2, gnew, g);
+    set_target(opposite(gnew, g), target(h2, g), g);
+    const auto fnew = add_face(g);
+    set_face(h2, fnew, g);
+    set_face(gnew, fnew, g);
+    set_face(next(gnew, g), fnew, g);
+    set_halfedge(fnew, h2, g);
+    h2 = next(opposite(gnew, g), g);
+  }
+  set_face(next(hnew, g), f, g);
+  set_halfedge(target(hnew, g), hnew, g);
+  visitor.on_add_center_vertex(hnew, std::as_const(g));
+  return hnew;
+}
+
+/// Whether remove_center_vertex(h, g) applies: target(h) is an inner vertex
+/// of degree ≥ 3 and the faces beyond its star are not all one and the same
+/// face (which would leave two faces glued back to back, as at a vertex of a
+/// tetrahedron).
+template <MutableFaceGraph G>
+bool can_remove_center_vertex(halfedge_descriptor_t<G> h, const G& g) {
+  namespace lo = detail::lo;
+  const auto v = target(h, g);
+  if (lo::border_vertex(v, g) || lo::vertex_degree(v, g) < 3) return false;
+  // Faces across the link: the sides of the star's faces away from v.
+  bool found = false, distinct = false, any_hole = false;
+  face_descriptor_t<G> first{};
+  auto x = h;
+  do {
+    // x targets v; walk face(x) from next(x) (leaving v) to prev(x) excluded.
+    for (auto y = next(next(x, g), g); y != x; y = next(y, g)) {
+      if (target(y, g) == v) break;
+      const auto fo = face(opposite(y, g), g);
+      if (fo == lo::null_f<G>()) {
+        any_hole = true;
+      } else if (!found) {
+        first = fo;
+        found = true;
+      } else if (fo != first) {
+        distinct = true;
+      }
+    }
+    x = opposite(next(x, g), g);
+  } while (x != h);
+  return any_hole || distinct || !found;
+}
+
+/// Removes target(h), its edges and faces, leaving one face bounded by its
+/// link, as CGAL::Euler::remove_center_vertex (the inverse of
+/// add_center_vertex). The surviving face is face(prev(h)).
+/// \returns prev(h) (taken before), or nullopt (see can_remove_center_vertex).
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+std::optional<halfedge_descriptor_t<G>> remove_center_vertex(halfedge_descriptor_t<G> h, G& g,
+                                                             Visitor&& visitor = {}) {
+  namespace lo = detail::lo;
+  if (!can_remove_center_vertex(h, g)) return std::nullopt;
+  visitor.before_remove_center_vertex(h, std::as_const(g));
+  auto h2 = opposite(next(h, g), g);
+  const auto hret = prev(h, g);
+  while (h2 != h) {
+    const auto gprev = prev(h2, g);
+    set_halfedge(target(gprev, g), gprev, g);
+    lo::skip_tip(gprev, g);
+    remove_face(face(h2, g), g);
+    const auto gnext = opposite(next(h2, g), g);
+    remove_edge(edge(h2, g), g);
+    h2 = gnext;
+  }
+  set_halfedge(target(hret, g), hret, g);
+  lo::skip_tip(hret, g);
+  remove_vertex(target(h, g), g);
+  remove_edge(edge(h, g), g);
+  const auto f = face(hret, g);
+  auto x = hret;
+  do {
+    set_face(x, f, g);
+    x = next(x, g);
+  } while (x != hret);
+  set_halfedge(f, hret, g);
+  return hret;
+}
+
+// ---------------------------------------------------------------------------
+// add_face, remove_face
+// ---------------------------------------------------------------------------
+
+// What add_face needs to know about the new face's sides.
+template <class G>
+struct Face_plan {
+  boost::container::small_vector<V<G>, 8> vertices;
+  boost::container::small_vector<H<G>, 8> halfedges; // existing u_i → u_{i+1}, or null
+};
+
+// Decides add_face without changing g; fills plan.
+template <class G, class Range>
+bool plan_face(const Range& range, const G& g, Face_plan<G>& plan) {
+  for (const auto& v : range) plan.vertices.push_back(v);
+  const std::size_t n = plan.vertices.size();
+  if (n < 3) return false;
+  auto sorted = plan.vertices;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
+  plan.halfedges.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto v = plan.vertices[i];
+    if (v == boost::graph_traits<G>::null_vertex()) return false;
+    if (halfedge(v, g) != null_h<G>() && !border_vertex(v, g)) return false;
+    const auto hv = find_halfedge(v, plan.vertices[(i + 1) % n], g);
+    if (hv != null_h<G>() && !border(hv, g)) return false;
+    plan.halfedges[i] = hv;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t ii = (i + 1) % n;
+    const bool new_prev = plan.halfedges[i] == null_h<G>(), new_next = plan.halfedges[ii] == null_h<G>();
+    const auto v = plan.vertices[ii];
+    // Two existing sides must already follow each other (CGAL would re-link
+    // a patch here; we refuse).
+    if (!new_prev && !new_next && next(plan.halfedges[i], g) != plan.halfedges[ii]) return false;
+    // Two new sides at a vertex that has edges: a second fan (non-manifold).
+    if (new_prev && new_next && halfedge(v, g) != null_h<G>()) return false;
+  }
+  return true;
+}
+
+/// Whether add_face(vertices, g) would add the face: at least three distinct
+/// vertices, each isolated or on the border, each existing side a border
+/// halfedge, and the face fits without re-linking (two existing sides at a
+/// vertex already consecutive on the border) and without making a vertex
+/// non-manifold (two new sides at a vertex that already has edges).
+template <MutableFaceGraph G, class Range>
+bool can_add_face(const Range& vertices, const G& g) {
+  detail::lo::Face_plan<G> plan;
+  return detail::lo::plan_face(vertices, g, plan);
+}
+
+/// Adds the face with the given vertices in order, as CGAL::Euler::add_face:
+/// missing edges are created, existing border halfedges reused; each vertex's
+/// halfedge is then set to a border halfedge if it has one.
+/// \returns the new face, or nullopt (see can_add_face). Unlike CGAL, a face
+/// that needs a patch re-linked or makes a non-manifold vertex is refused.
+template <MutableFaceGraph G, class Range, class Visitor = Mutation_visitor>
+std::optional<face_descriptor_t<G>> add_face(const Range& vertices, G& g, Visitor&& visitor = {}) {
+  namespace lo = detail::lo;
+  using H = halfedge_descriptor_t<G>;
+  lo::Face_plan<G> plan;
+  if (!lo::plan_face(vertices, g, plan)) return std::nullopt;
+  const std::size_t n = plan.vertices.size();
+  boost::container::small_vector<bool, 8> is_new(n);
+  for (std::size_t i = 0; i < n; ++i) is_new[i] = plan.halfedges[i] == lo::null_h<G>();
+  auto& hs = plan.halfedges;
+  boost::container::small_vector<std::pair<H, H>, 24> next_cache;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_new[i]) continue;
+    const auto e = add_edge(g);
+    hs[i] = halfedge(e, g);
+    set_target(hs[i], plan.vertices[(i + 1) % n], g);
+    set_target(opposite(hs[i], g), plan.vertices[i], g);
+    set_face(opposite(hs[i], g), lo::null_f<G>(), g);
+  }
+  const auto f = add_face(g);
+  set_halfedge(f, hs[n - 1], g);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t ii = (i + 1) % n;
+    const auto v = plan.vertices[ii];
+    const H inner_prev = hs[i], inner_next = hs[ii];
+    const unsigned id = (is_new[i] ? 1u : 0u) | (is_new[ii] ? 2u : 0u);
+    if (id != 0) {
+      const H outer_prev = opposite(inner_next, g), outer_next = opposite(inner_prev, g);
+      if (id == 1) {
+        const H border_prev = prev(inner_next, g);
+        next_cache.emplace_back(border_prev, outer_next);
+        set_halfedge(v, border_prev, g);
+      } else if (id == 2) {
+        const H border_next = next(inner_prev, g);
+        next_cache.emplace_back(outer_prev, border_next);
+        set_halfedge(v, outer_prev, g);
+      } else { // both new: v was isolated (plan_face)
+        set_halfedge(v, outer_prev, g);
+        next_cache.emplace_back(outer_prev, outer_next);
+      }
+      next_cache.emplace_back(inner_prev, inner_next);
+    }
+    set_face(hs[i], f, g);
+  }
+  for (const auto& [a, b] : next_cache) set_next(a, b, g);
+  for (std::size_t i = 0; i < n; ++i) {
+    // CGAL's adjust_incoming_halfedge: the first border halfedge around v.
+    const auto v = plan.vertices[i];
+    H x = halfedge(v, g);
+    if (x == lo::null_h<G>()) continue;
+    const H start = x;
+    do {
+      if (lo::border(x, g)) {
+        set_halfedge(v, x, g);
+        break;
+      }
+      x = opposite(next(x, g), g);
+    } while (x != start);
+  }
+  visitor.on_add_face(f, std::as_const(g));
+  return f;
+}
+
+/// Whether remove_face(h, g) applies: h is not a border halfedge.
+template <MutableFaceGraph G>
+bool can_remove_face(halfedge_descriptor_t<G> h, const G& g) {
+  return !detail::lo::border(h, g);
+}
+
+/// Removes face(h), as CGAL::Euler::remove_face: its sides become border;
+/// edges with no face left and vertices with no edge left are removed too.
+/// \returns true, or false (h is a border halfedge: refused).
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+bool remove_face(halfedge_descriptor_t<G> h, G& g, Visitor&& visitor = {}) {
+  if (!can_remove_face(h, g)) return false;
+  visitor.before_remove_face(h, std::as_const(g));
+  detail::lo::remove_face_raw(h, g);
+  return true;
+}
+
+// ---------------------------------------------------------------------------
+// triangulate_face, triangulate_faces
+// ---------------------------------------------------------------------------
+
+// The halfedge of f targeting its lowest-index vertex.
+template <class G>
+H<G> lowest_corner(F<G> f, const G& g) {
+  const auto index = get(vertex_index, g);
+  const H<G> start = halfedge(f, g);
+  H<G> best = start, x = next(start, g);
+  while (x != start) {
+    if (get(index, target(x, g)) < get(index, target(best, g))) best = x;
+    x = next(x, g);
+  }
+  return best;
+}
+
+/// Whether triangulate_face(f, g) would succeed: f is a face and none of the
+/// fan's diagonals (from its lowest-index vertex) exists already.
+template <MutableFaceGraph G>
+  requires HasIndexMap<G, vertex_index_t>
+bool can_triangulate_face(face_descriptor_t<G> f, const G& g) {
+  namespace lo = detail::lo;
+  if (f == lo::null_f<G>()) return false;
+  const auto h0 = lo::lowest_corner(f, g);
+  const auto v0 = target(h0, g);
+  // Diagonals v0 → target(x) for x from next(next(h0)) up to prev(prev(h0)).
+  for (auto x = next(next(h0, g), g); next(x, g) != h0; x = next(x, g))
+    if (lo::find_halfedge(v0, target(x, g), g) != lo::null_h<G>()) return false;
+  return true;
+}
+
+/// Triangulates f by a fan from its lowest-index vertex v0 (deterministic
+/// across backends), with split_face: an n-gon gives n − 2 triangles,
+/// n − 3 new edges and faces; f keeps the last triangle. A triangle is left
+/// as is. The visitor sees each split (on_split_face).
+/// \returns true, or false (refused: a diagonal exists; nothing changed).
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+  requires HasIndexMap<G, vertex_index_t>
+bool triangulate_face(face_descriptor_t<G> f, G& g, Visitor&& visitor = {}) {
+  namespace lo = detail::lo;
+  if (!can_triangulate_face(f, g)) return false;
+  const auto h0 = lo::lowest_corner(f, g);
+  while (next(next(next(h0, g), g), g) != h0) {
+    const auto h3 = lo::split_face_raw(h0, next(next(h0, g), g), g);
+    visitor.on_split_face(h3, std::as_const(g));
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------------
+// bevel_face
+// ---------------------------------------------------------------------------
+
+/// Whether bevel_face(f, g) applies: f is a face.
+template <MutableFaceGraph G>
+bool can_bevel_face(face_descriptor_t<G> f, const G& /*g*/) {
+  return f != null_f<G>();
+}
+
+/// Insets face f (the seeds' bevel_face, an extrusion of height 0): f, with
+/// corners v_0 … v_{n−1} from halfedge(f), becomes the inner face of n new
+/// vertices w_i (at v_i's point), joined to the old corners by n spoke edges
+/// v_i–w_i; between them, n new quads (v_i, v_{i+1}, w_{i+1}, w_i) take over
+/// f's old sides. Adds n vertices, 2n edges and n faces, in corner order
+/// starting at halfedge(f) (vertices, then spoke/ring edge pairs, then faces).
+/// \returns f (now bounded by the w_i; halfedge(f) targets w_1), or nullopt
+/// if f is null. Move the w_i (e.g. inward and along the normal) to bevel.
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+std::optional<face_descriptor_t<G>> bevel_face(face_descriptor_t<G> f, G& g, Visitor&& visitor = {}) {
+  if (!can_bevel_face(f, g)) return std::nullopt;
+  using Hd = H<G>;
+  using Vd = V<G>;
+  using Fd = F<G>;
+  // Collect: the sides h_i = v_i → v_{i+1}.
+  boost::container::small_vector<Hd, 8> side;
+  {
+    const Hd start = halfedge(f, g);
+    Hd x = next(start, g);
+    do {
+      side.push_back(x);
+      x = next(x, g);
+    } while (x != next(start, g));
+  }
+  const std::size_t n = side.size();
+  // Create.
+  boost::container::small_vector<Vd, 8> w(n);
+  boost::container::small_vector<Hd, 8> spoke(n), ring(n); // spoke_i: v_i → w_i; ring_i: w_i → w_{i+1}
+  boost::container::small_vector<Fd, 8> quad(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    w[i] = add_vertex(g);
+    if constexpr (HasVertexPoints<G>) {
+      auto pm = get(vertex_point, g);
+      const Vd vi = source(side[i], g);
+      put(pm, w[i], point_t<G>(get(pm, vi)));
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    spoke[i] = halfedge(add_edge(g), g);
+    ring[i] = halfedge(add_edge(g), g);
+  }
+  for (std::size_t i = 0; i < n; ++i) quad[i] = add_face(g);
+  // Connect.
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    const Hd h = side[i];
+    const Hd sp_j = spoke[j], sp_i_back = opposite(spoke[i], g), ring_back = opposite(ring[i], g);
+    // Quad i: h (v_i → v_j), spoke_j (v_j → w_j), ring_i reversed (w_j → w_i), spoke_i reversed (w_i → v_i).
+    set_target(sp_j, w[j], g);
+    set_target(opposite(sp_j, g), target(h, g), g);
+    set_target(ring[i], w[j], g);
+    set_target(ring_back, w[i], g);
+    set_next(h, sp_j, g);
+    set_next(sp_j, ring_back, g);
+    set_next(ring_back, sp_i_back, g);
+    set_next(sp_i_back, h, g);
+    for (const Hd x : {h, sp_j, ring_back, sp_i_back}) set_face(x, quad[i], g);
+    set_halfedge(quad[i], h, g);
+    // The inner face: ring_i → ring_j.
+    set_next(ring[i], ring[j], g);
+    set_face(ring[i], f, g);
+    set_halfedge(w[j], ring[i], g);
+  }
+  set_halfedge(f, ring[0], g);
+  visitor.on_bevel_face(f, std::as_const(g));
+  return f;
+}
+
+/// Whether bevel_vertex(v, g) applies: v is an inner vertex of degree ≥ 3.
+template <MutableFaceGraph G>
+bool can_bevel_vertex(vertex_descriptor_t<G> v, const G& g) {
+  return halfedge(v, g) != null_h<G>() && !border_vertex(v, g) && !degree_below(v, 3, g);
+}
+
+/// Replaces inner vertex v of degree d by a new d-sided face (the seeds'
+/// bevel_vertex, of size 0): each edge a_i–v now ends at a new vertex w_i (at
+/// v's point), consecutive w_i are joined by d new edges, one inside each face
+/// around v (which gains a side), and the w_i bound the new face. Removes v;
+/// adds d vertices, d edges and one face. The w_i follow the incoming
+/// halfedges of v from halfedge(v), turning as opposite(next(h)).
+/// \returns the new face, or nullopt (see can_bevel_vertex). Move the w_i
+/// along their edges to bevel.
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+std::optional<face_descriptor_t<G>> bevel_vertex(vertex_descriptor_t<G> v, G& g, Visitor&& visitor = {}) {
+  if (!can_bevel_vertex(v, g)) return std::nullopt;
+  using Hd = H<G>;
+  boost::container::small_vector<Hd, 8> in; // in_{i+1} = opposite(next(in_i))
+  {
+    const Hd start = halfedge(v, g);
+    Hd x = start;
+    do {
+      in.push_back(x);
+      x = opposite(next(x, g), g);
+    } while (x != start);
+  }
+  const std::size_t d = in.size();
+  boost::container::small_vector<V<G>, 8> w(d);
+  boost::container::small_vector<Hd, 8> ring(d); // ring_i: w_i → w_{i+1}, inside face(in_i)
+  for (std::size_t i = 0; i < d; ++i) {
+    w[i] = add_vertex(g);
+    if constexpr (HasVertexPoints<G>) {
+      auto pm = get(vertex_point, g);
+      put(pm, w[i], point_t<G>(get(pm, v)));
+    }
+  }
+  for (std::size_t i = 0; i < d; ++i) ring[i] = halfedge(add_edge(g), g);
+  const auto nf = add_face(g);
+  for (std::size_t i = 0; i < d; ++i) set_target(in[i], w[i], g);
+  for (std::size_t i = 0; i < d; ++i) {
+    const std::size_t j = (i + 1) % d, k = (i + d - 1) % d;
+    const Hd out_j = opposite(in[j], g); // was next(in_i)
+    set_next(in[i], ring[i], g);
+    set_next(ring[i], out_j, g);
+    set_target(ring[i], w[j], g);
+    set_face(ring[i], face(in[i], g), g);
+    set_target(opposite(ring[i], g), w[i], g);
+    set_next(opposite(ring[i], g), opposite(ring[k], g), g);
+    set_face(opposite(ring[i], g), nf, g);
+    set_halfedge(w[i], in[i], g);
+  }
+  set_halfedge(nf, opposite(ring[0], g), g);
+  remove_vertex(v, g);
+  visitor.on_bevel_vertex(nf, std::as_const(g));
+  return nf;
+}
+
+// ---------------------------------------------------------------------------
+// erase_vertex, erase_edge (the modelling names)
+// ---------------------------------------------------------------------------
+
+/// Whether erase_vertex(v, g) applies (see remove_center_vertex).
+template <MutableFaceGraph G>
+bool can_erase_vertex(vertex_descriptor_t<G> v, const G& g) {
+  const auto h = halfedge(v, g);
+  return h != null_h<G>() && can_remove_center_vertex(h, g);
+}
+
+/// Erases inner vertex v and its edges, merging its faces into one:
+/// remove_center_vertex(halfedge(v, g), g).
+/// \returns the merged face, or nullopt (v isolated, on the border, of
+/// degree < 3, or a tetrahedron vertex).
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+std::optional<face_descriptor_t<G>> erase_vertex(vertex_descriptor_t<G> v, G& g, Visitor&& visitor = {}) {
+  if (!can_erase_vertex(v, g)) return std::nullopt;
+  const auto h = remove_center_vertex(halfedge(v, g), g, visitor);
+  return face(*h, g);
+}
+
+/// Whether erase_edge(e, g) applies (see join_face).
+template <MutableFaceGraph G>
+bool can_erase_edge(edge_descriptor_t<G> e, const G& g) {
+  return can_join_face(halfedge(e, g), g);
+}
+
+/// Erases e, merging the faces on its two sides: join_face(halfedge(e), g)
+/// (if halfedge(e) is a border halfedge, the other face joins the hole).
+/// \returns the merged face (null if it joined a hole), or nullopt (see
+/// can_join_face).
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+std::optional<face_descriptor_t<G>> erase_edge(edge_descriptor_t<G> e, G& g, Visitor&& visitor = {}) {
+  const auto h = halfedge(e, g);
+  if (!can_join_face(h, g)) return std::nullopt;
+  const auto r = join_face(h, g, visitor);
+  return face(*r, g);
+}
+
+/// Triangulates every face with more than three sides (triangulate_face, in
+/// face order). \returns the number of faces refused (left as they were).
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+  requires FaceListGraph<G> && HasIndexMap<G, vertex_index_t>
+std::size_t triangulate_faces(G& g, Visitor&& visitor = {}) {
+  std::vector<face_descriptor_t<G>> todo;
+  for (const auto f : faces(g))
+    if (!detail::lo::triangle_at(halfedge(f, g), g)) todo.push_back(f);
+  std::size_t refused = 0;
+  for (const auto f : todo)
+    if (!triangulate_face(f, g, visitor)) ++refused;
+  return refused;
+}
+
+} // namespace detail::lo
+
+// ---------------------------------------------------------------------------
+// The public names: customization point objects
+// ---------------------------------------------------------------------------
+//
+// Each operation is a function object that forwards to the generic
+// implementation above (documented there, same name, in detail::lo). Being objects, they are invisible to argument-
+// dependent lookup: CGAL's own unqualified calls (CGAL::Euler::collapse_edge
+// calls join_face(h, g)) on a genmesh mesh never pick them up, and the
+// MutableFaceGraph concept's remove_face(f, g) still means the backend's.
+
+#define GENMESH_LOCAL_OPERATION(name)                                                   \
+  inline constexpr auto name = []<class... Args>(Args&&... args)                         \
+      -> decltype(detail::lo::name(std::forward<Args>(args)...)) {                        \
+    return detail::lo::name(std::forward<Args>(args)...);                                \
+  };
+GENMESH_LOCAL_OPERATION(can_flip_edge)
+GENMESH_LOCAL_OPERATION(flip_edge)
+GENMESH_LOCAL_OPERATION(can_split_edge)
+GENMESH_LOCAL_OPERATION(split_edge)
+GENMESH_LOCAL_OPERATION(can_split_edge_and_triangulate)
+GENMESH_LOCAL_OPERATION(split_edge_and_triangulate)
+GENMESH_LOCAL_OPERATION(does_satisfy_link_condition)
+GENMESH_LOCAL_OPERATION(can_collapse_edge)
+GENMESH_LOCAL_OPERATION(collapse_edge)
+GENMESH_LOCAL_OPERATION(can_split_face)
+GENMESH_LOCAL_OPERATION(split_face)
+GENMESH_LOCAL_OPERATION(can_join_face)
+GENMESH_LOCAL_OPERATION(join_face)
+GENMESH_LOCAL_OPERATION(can_add_center_vertex)
+GENMESH_LOCAL_OPERATION(add_center_vertex)
+GENMESH_LOCAL_OPERATION(can_remove_center_vertex)
+GENMESH_LOCAL_OPERATION(remove_center_vertex)
+GENMESH_LOCAL_OPERATION(can_add_face)
+GENMESH_LOCAL_OPERATION(can_remove_face)
+GENMESH_LOCAL_OPERATION(can_triangulate_face)
+GENMESH_LOCAL_OPERATION(triangulate_face)
+GENMESH_LOCAL_OPERATION(triangulate_faces)
+GENMESH_LOCAL_OPERATION(can_bevel_face)
+GENMESH_LOCAL_OPERATION(bevel_face)
+GENMESH_LOCAL_OPERATION(can_bevel_vertex)
+GENMESH_LOCAL_OPERATION(bevel_vertex)
+GENMESH_LOCAL_OPERATION(can_erase_vertex)
+GENMESH_LOCAL_OPERATION(erase_vertex)
+GENMESH_LOCAL_OPERATION(can_erase_edge)
+GENMESH_LOCAL_OPERATION(erase_edge)
+
+/// All local operations again, under CGAL::Euler's names: add_face(vertices, g)
+/// and remove_face(h, g) exist only here, because genmesh::add_face(g) and
+/// genmesh::remove_face(f, g) are Halfedge_mesh's MutableFaceGraph primitives.
+namespace euler {
+GENMESH_LOCAL_OPERATION(add_face)
+GENMESH_LOCAL_OPERATION(remove_face)
+using genmesh::can_flip_edge;
+using genmesh::flip_edge;
+using genmesh::can_split_edge;
+using genmesh::split_edge;
+using genmesh::can_split_edge_and_triangulate;
+using genmesh::split_edge_and_triangulate;
+using genmesh::does_satisfy_link_condition;
+using genmesh::can_collapse_edge;
+using genmesh::collapse_edge;
+using genmesh::can_split_face;
+using genmesh::split_face;
+using genmesh::can_join_face;
+using genmesh::join_face;
+using genmesh::can_add_center_vertex;
+using genmesh::add_center_vertex;
+using genmesh::can_remove_center_vertex;
+using genmesh::remove_center_vertex;
+using genmesh::can_add_face;
+using genmesh::can_remove_face;
+using genmesh::can_triangulate_face;
+using genmesh::triangulate_face;
+using genmesh::triangulate_faces;
+using genmesh::can_bevel_face;
+using genmesh::bevel_face;
+using genmesh::can_bevel_vertex;
+using genmesh::bevel_vertex;
+using genmesh::can_erase_vertex;
+using genmesh::erase_vertex;
+using genmesh::can_erase_edge;
+using genmesh::erase_edge;
+} // namespace euler
+
+#undef GENMESH_LOCAL_OPERATION
+
+} // namespace genmesh
