@@ -84,7 +84,7 @@ TEST(Cli, DemoRunsEveryBackendAndTheyAgree) {
   int records = 0;
   for (std::string line; std::getline(lines, line); ++records)
     EXPECT_TRUE(json_bool(line, "same_as_reference")) << line;
-  EXPECT_GE(records, 12);  // six meshes, two backends
+  EXPECT_GE(records, 24);  // six meshes, two steps, two backends
 }
 
 // `info --json` on real meshes equals CGAL's own reading of the file.

@@ -13,6 +13,7 @@
 #include <genmesh/generators.h>
 #include <genmesh/halfedge_mesh.h>
 #include <genmesh/io.h>
+#include <genmesh/local_operations.h>
 #include <genmesh/soup_to_mesh.h>
 #include <genmesh/validity.h>
 
@@ -25,6 +26,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -241,6 +243,28 @@ struct Demo_row {
   double seconds = 0;
 };
 
+// Triangulates, then applies `count` seeded random flips, splits and
+// collapses, picking edges by their rank in edges(g): the same edges on every
+// backend, since every backend numbers elements the same way.
+template <class Mesh>
+void random_local_operations(Mesh& mesh, unsigned seed, int count) {
+  genmesh::triangulate_faces(mesh);
+  std::mt19937 rng(seed);
+  std::vector<genmesh::edge_descriptor_t<Mesh>> live;
+  for (int i = 0; i < count; ++i) {
+    live.assign(edges(mesh).begin(), edges(mesh).end());
+    const auto e = live[rng() % live.size()];
+    const auto kind = rng() % 3;
+    if (kind == 0) genmesh::flip_edge(halfedge(e, mesh), mesh);
+    else if (kind == 1) genmesh::split_edge_and_triangulate(halfedge(e, mesh), mesh);
+    else genmesh::collapse_edge(e, mesh);
+  }
+}
+
+// The demo's steps: "build" (soup → mesh), "ops" (random local operations).
+// Later algorithms (subdivision, simplification, remeshing) add theirs here.
+const std::vector<std::string> demo_steps{"build", "ops"};
+
 // One step of the demo on one backend: builds the mesh, runs the step, checks.
 template <class Mesh>
 Demo_row run_step(const std::string& mesh_name, const std::string& backend, const std::string& step,
@@ -248,11 +272,27 @@ Demo_row run_step(const std::string& mesh_name, const std::string& backend, cons
   Mesh mesh;
   const auto t0 = std::chrono::steady_clock::now();
   genmesh::build_mesh(input, mesh);
-  // Later algorithms (subdivision, simplification, remeshing) add their steps here.
+  if (step == "ops") random_local_operations(mesh, 2026, 300);
   Demo_row row{mesh_name, backend, step, genmesh::check_mesh(mesh), {}, 0};
   row.seconds = seconds_since(t0);
   row.result = genmesh::canonical(genmesh::to_soup(mesh));
   return row;
+}
+
+void print_demo_row(const Demo_row& r, bool same, bool json) {
+  if (json) {
+    std::cout << "{\"command\":\"demo\",\"mesh\":\"" << r.mesh << "\",\"step\":\"" << r.step
+              << "\",\"backend\":\"" << r.backend << "\"," << json_counts(r.report)
+              << ",\"same_as_reference\":" << (same ? "true" : "false") << ",\"seconds\":" << r.seconds
+              << "}\n";
+    return;
+  }
+  std::printf("%-20s %-8s %-13s %8zu %8zu %8zu %3lld %5zu %5s %-5s %-9s %10.6f\n", r.mesh.c_str(),
+              r.step.c_str(), r.backend.c_str(), std::size_t(r.report.vertices),
+              std::size_t(r.report.edges), std::size_t(r.report.faces),
+              static_cast<long long>(r.report.euler_characteristic), std::size_t(r.report.boundary_loops),
+              r.report.genus ? std::to_string(*r.report.genus).c_str() : "n/a",
+              r.report.ok() ? "yes" : "NO", same ? "yes" : "DIFFERS", r.seconds);
 }
 
 int cmd_demo(const Args& a) {
@@ -271,26 +311,16 @@ int cmd_demo(const Args& a) {
                 "V", "E", "F", "chi", "loops", "genus", "valid", "same", "seconds");
   }
   for (const auto& [name, soup] : meshes) {
-    std::vector<Demo_row> rows;
-    rows.push_back(run_step<Halfedge_mesh>(name, "halfedge", "build", soup));
-    rows.push_back(run_step<Surface_mesh>(name, "surface-mesh", "build", soup));
-    for (const Demo_row& r : rows) {
-      // The reference is the first backend; every other must give the same soup.
-      const bool same = r.result == rows.front().result && r.result.num_faces() == soup.num_faces();
-      all_ok = all_ok && same && r.report.ok();
-      if (a.json) {
-        std::cout << "{\"command\":\"demo\",\"mesh\":\"" << r.mesh << "\",\"step\":\"" << r.step
-                  << "\",\"backend\":\"" << r.backend << "\"," << json_counts(r.report)
-                  << ",\"same_as_reference\":" << (same ? "true" : "false")
-                  << ",\"seconds\":" << r.seconds << "}\n";
-      } else {
-        std::printf("%-20s %-8s %-13s %8zu %8zu %8zu %3lld %5zu %5s %-5s %-9s %10.6f\n", r.mesh.c_str(),
-                    r.step.c_str(), r.backend.c_str(), std::size_t(r.report.vertices),
-                    std::size_t(r.report.edges), std::size_t(r.report.faces),
-                    static_cast<long long>(r.report.euler_characteristic),
-                    std::size_t(r.report.boundary_loops),
-                    r.report.genus ? std::to_string(*r.report.genus).c_str() : "n/a",
-                    r.report.ok() ? "yes" : "NO", same ? "yes" : "DIFFERS", r.seconds);
+    for (const std::string& step : demo_steps) {
+      const Demo_row rows[] = {run_step<Halfedge_mesh>(name, "halfedge", step, soup),
+                               run_step<Surface_mesh>(name, "surface-mesh", step, soup)};
+      for (const Demo_row& r : rows) {
+        // The reference is the first backend; every other must give the same
+        // soup (and building alone must give back the input's faces).
+        const bool same = r.result == rows[0].result &&
+                          (step != "build" || r.result.num_faces() == soup.num_faces());
+        all_ok = all_ok && same && r.report.ok();
+        print_demo_row(r, same, a.json);
       }
     }
   }
