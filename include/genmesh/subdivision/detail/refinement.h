@@ -1,0 +1,609 @@
+// genmesh/subdivision/detail/refinement.h — shared machinery of the
+// subdivision schemes: a read-only snapshot of the old mesh, the checks, and
+// the rebuild of the refined mesh from a polygon soup.
+//
+// The snapshot numbers vertices in vertex iteration order, edges in edge
+// iteration order and faces in face iteration order, and stores every face as
+// a cycle of corners (corner c of a face = the halfedge leaving its vertex),
+// each face rotated to start at its lowest vertex number, so every scheme that
+// reads only the snapshot gives the same soup on every backend.
+#pragma once
+
+#include <genmesh/concepts.h>
+#include <genmesh/exceptions.h>
+#include <genmesh/point_traits.h>
+#include <genmesh/polygon_soup.h>
+#include <genmesh/property_maps.h>
+#include <genmesh/soup_to_mesh.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace genmesh {
+
+/// How a scheme treats the mesh border.
+enum class Boundary_rule {
+  smooth, ///< the border curve is refined with the cubic B-spline rules (1/8, 3/4, 1/8; 1/2, 1/2)
+  fixed,  ///< border vertices keep their positions; new border points are edge midpoints
+};
+
+/// What a subdivision did.
+struct Subdivision_result {
+  int levels_done = 0;        ///< levels applied
+  std::size_t vertices = 0;   ///< live counts after the last level
+  std::size_t faces = 0;
+  /// With creases given: the sharpness of every edge of the result, in edge
+  /// iteration order (feed it to the next call); empty otherwise.
+  std::vector<double> edge_sharpness;
+};
+
+namespace detail::subdivision {
+
+inline constexpr std::uint32_t k_none = 0xffffffffu;
+
+/// The old mesh, read once: points, face cycles as corners, twins, edges.
+struct Snapshot {
+  std::vector<Eigen::Vector3d> points;  ///< per vertex
+  std::vector<std::uint32_t> face_begin{0}; ///< CSR: face f's corners are [face_begin[f], face_begin[f+1])
+  std::vector<std::uint32_t> corner_vertex; ///< source vertex of the corner's halfedge
+  std::vector<std::uint32_t> corner_face;
+  std::vector<std::uint32_t> corner_twin;   ///< corner of the opposite halfedge, k_none on the border
+  std::vector<std::uint32_t> corner_edge;
+  std::vector<std::uint32_t> edge_corner;   ///< a corner of each edge (the one of halfedge(e) when it has a face)
+  std::vector<std::uint32_t> vertex_corner; ///< an outgoing corner per vertex (a border one when there is), or k_none
+  std::vector<std::uint32_t> border_edges;  ///< per vertex: number of border edges at it
+  std::vector<std::uint32_t> valence;       ///< per vertex: number of edges at it
+
+  std::size_t num_vertices() const { return points.size(); }
+  std::size_t num_faces() const { return face_begin.size() - 1; }
+  std::size_t num_edges() const { return edge_corner.size(); }
+  std::uint32_t face_size(std::uint32_t f) const { return face_begin[f + 1] - face_begin[f]; }
+  std::uint32_t next(std::uint32_t c) const {
+    std::uint32_t f = corner_face[c];
+    return c + 1 == face_begin[f + 1] ? face_begin[f] : c + 1;
+  }
+  std::uint32_t prev(std::uint32_t c) const {
+    std::uint32_t f = corner_face[c];
+    return c == face_begin[f] ? face_begin[f + 1] - 1 : c - 1;
+  }
+  /// Target vertex of corner c's halfedge.
+  std::uint32_t head(std::uint32_t c) const { return corner_vertex[next(c)]; }
+  bool is_border_edge(std::uint32_t e) const { return corner_twin[edge_corner[e]] == k_none; }
+  /// A vertex on the border, or where the halfedge structure is not a single fan.
+  bool is_border_vertex(std::uint32_t v) const { return border_edges[v] != 0 || vertex_corner[v] == k_none; }
+  /// The outgoing corner after c counter-clockwise around its vertex, k_none past the border.
+  std::uint32_t rotate_ccw(std::uint32_t c) const { return corner_twin[prev(c)]; }
+  /// The two border neighbours of a border vertex with exactly two border edges
+  /// (the one after it along the border, the one before it).
+  std::pair<std::uint32_t, std::uint32_t> border_neighbours(std::uint32_t v) const {
+    // vertex_corner[v] leaves v along a border edge (v → a); the walk ccw
+    // ends at the corner whose prev comes into v along the other border edge.
+    std::uint32_t c = vertex_corner[v], a = head(c);
+    std::uint32_t last = c;
+    for (std::size_t guard = 0; guard <= valence[v]; ++guard) {
+      std::uint32_t n = rotate_ccw(last);
+      if (n == k_none) break;
+      last = n;
+    }
+    return {a, corner_vertex[prev(last)]};
+  }
+};
+
+/// An outgoing corner per vertex; on the border the one along the border
+/// edge (its ccw walk covers the whole fan). A vertex with more than one
+/// border gap gets none: schemes treat it as a corner.
+inline void set_vertex_corners(Snapshot& s) {
+  for (std::size_t c = 0; c < s.corner_vertex.size(); ++c) {
+    std::uint32_t v = s.corner_vertex[c];
+    if (s.border_edges[v] == 0) {
+      if (s.vertex_corner[v] == k_none) s.vertex_corner[v] = static_cast<std::uint32_t>(c);
+    } else if (s.corner_twin[c] == k_none && s.border_edges[v] == 2) {
+      s.vertex_corner[v] = static_cast<std::uint32_t>(c);
+    }
+  }
+}
+
+/// Reads g into a snapshot. Throws genmesh::invalid_input naming the face
+/// when max_face_size is set and a face has another size than it (Loop, √3,
+/// butterfly take triangles only), or when a face cycle is corrupt; g is
+/// never touched.
+template <class G>
+Snapshot snapshot(G& g, const char* scheme, std::uint32_t required_face_size = 0) {
+  using H = halfedge_descriptor_t<G>;
+  Snapshot s;
+  auto pts = get(vertex_point, g);
+  auto vindex = get(vertex_index, g);
+  auto hindex = get(halfedge_index, g);
+  std::vector<std::uint32_t> vnum(index_bound(vertex_index, g), k_none);
+  std::vector<std::uint32_t> hcorner(index_bound(halfedge_index, g), k_none);
+  s.points.reserve(static_cast<std::size_t>(num_vertices(g)));
+  for (auto v : vertices(g)) {
+    vnum[static_cast<std::size_t>(get(vindex, v))] = static_cast<std::uint32_t>(s.points.size());
+    s.points.push_back(to_eigen(get(pts, v)));
+  }
+  const std::size_t nv = s.points.size();
+  const std::size_t nh = static_cast<std::size_t>(num_halfedges(g));
+  s.corner_vertex.reserve(nh);
+  s.corner_face.reserve(nh);
+  s.face_begin.reserve(static_cast<std::size_t>(num_faces(g)) + 1);
+  std::vector<H> cycle;
+  std::vector<H> corner_h;
+  corner_h.reserve(nh);
+  std::uint32_t fnum = 0;
+  for (auto f : faces(g)) {
+    cycle.clear();
+    H h0 = halfedge(f, g), h = h0;
+    do {
+      if (cycle.size() > nh) throw invalid_input(std::string(scheme) + ": the cycle of face " + std::to_string(fnum) + " is corrupt");
+      cycle.push_back(h);
+      h = next(h, g);
+    } while (h != h0);
+    if (required_face_size != 0 && cycle.size() != required_face_size)
+      throw invalid_input(std::string(scheme) + ": face " + std::to_string(fnum) + " has " +
+                          std::to_string(cycle.size()) + " sides; the scheme takes only " +
+                          std::to_string(required_face_size) + "-sided faces (the mesh is unchanged)");
+    // corner = halfedge leaving its vertex: source(h) = target(prev(h))
+    auto src = [&](H x) { return vnum[static_cast<std::size_t>(get(vindex, source(x, g)))]; };
+    auto lowest = std::min_element(cycle.begin(), cycle.end(), [&](H a, H b) { return src(a) < src(b); });
+    std::rotate(cycle.begin(), lowest, cycle.end());
+    for (H x : cycle) {
+      hcorner[static_cast<std::size_t>(get(hindex, x))] = static_cast<std::uint32_t>(s.corner_vertex.size());
+      s.corner_vertex.push_back(src(x));
+      s.corner_face.push_back(fnum);
+      corner_h.push_back(x);
+    }
+    s.face_begin.push_back(static_cast<std::uint32_t>(s.corner_vertex.size()));
+    ++fnum;
+  }
+  const std::size_t nc = s.corner_vertex.size();
+  s.corner_twin.assign(nc, k_none);
+  s.corner_edge.assign(nc, k_none);
+  for (std::size_t c = 0; c < nc; ++c)
+    s.corner_twin[c] = hcorner[static_cast<std::size_t>(get(hindex, opposite(corner_h[c], g)))];
+  s.edge_corner.reserve(static_cast<std::size_t>(num_edges(g)));
+  s.border_edges.assign(nv, 0);
+  s.valence.assign(nv, 0);
+  s.vertex_corner.assign(nv, k_none);
+  for (auto e : edges(g)) {
+    H h = halfedge(e, g);
+    std::uint32_t c = hcorner[static_cast<std::size_t>(get(hindex, h))];
+    std::uint32_t o = hcorner[static_cast<std::size_t>(get(hindex, opposite(h, g)))];
+    if (c == k_none) std::swap(c, o);
+    if (c == k_none) throw invalid_input(std::string(scheme) + ": an edge has no face on either side");
+    auto en = static_cast<std::uint32_t>(s.edge_corner.size());
+    s.edge_corner.push_back(c);
+    s.corner_edge[c] = en;
+    if (o != k_none) s.corner_edge[o] = en;
+    std::uint32_t a = s.corner_vertex[c], b = s.head(c);
+    ++s.valence[a];
+    ++s.valence[b];
+    if (o == k_none) {
+      ++s.border_edges[a];
+      ++s.border_edges[b];
+    }
+  }
+  set_vertex_corners(s);
+  return s;
+}
+
+/// Pairs the corners of a refined soup through per-vertex buckets (linear time).
+inline std::vector<std::uint32_t> pair_corners(const Polygon_soup& s) {
+  const std::size_t np = s.num_points(), nf = s.num_faces(), nc = s.indices.size();
+  std::vector<std::uint32_t> head(nc);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::uint32_t b = s.offsets[f], e = s.offsets[f + 1];
+    for (std::uint32_t c = b; c + 1 < e; ++c) head[c] = s.indices[c + 1];
+    head[e - 1] = s.indices[b];
+  }
+  std::vector<std::uint32_t> begin(np + 1, 0), bucket(nc);
+  for (std::size_t c = 0; c < nc; ++c) ++begin[s.indices[c] + 1];
+  for (std::size_t v = 0; v < np; ++v) begin[v + 1] += begin[v];
+  {
+    std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
+    for (std::size_t c = 0; c < nc; ++c) bucket[fill[s.indices[c]]++] = static_cast<std::uint32_t>(c);
+  }
+  std::vector<std::uint32_t> twin(nc, k_none);
+  std::vector<char> done(nc, 0);
+  for (std::size_t c = 0; c < nc; ++c) {
+    if (done[c]) continue;
+    const std::uint32_t u = s.indices[c], v = head[c];
+    for (std::uint32_t i = begin[v]; i < begin[v + 1]; ++i)
+      if (head[bucket[i]] == u) {
+        twin[c] = bucket[i];
+        twin[bucket[i]] = static_cast<std::uint32_t>(c);
+        done[bucket[i]] = 1;
+        break;
+      }
+  }
+  return twin;
+}
+
+/// Builds the empty g from a refined soup that is an oriented 2-manifold by
+/// construction (every scheme's output is), with the same structure
+/// genmesh::build_mesh gives (same vertex, edge, face and halfedge order), but
+/// without checking and sorting: the refined meshes are large, and building
+/// them is most of a level's time. `known_twin`, when not empty, gives each
+/// corner's twin corner (k_none on the border) as the scheme knows it from the
+/// refinement pattern; otherwise corners are paired through per-vertex
+/// buckets in linear time.
+template <class G>
+void build_refined(const Polygon_soup& s, G& g, std::vector<std::uint32_t> known_twin = {},
+                   std::vector<std::uint32_t>* corner_edge = nullptr) {
+  using H = halfedge_descriptor_t<G>;
+  using V = vertex_descriptor_t<G>;
+  using Traits = boost::graph_traits<G>;
+  const std::size_t np = s.num_points(), nf = s.num_faces(), nc = s.indices.size();
+  std::vector<std::uint32_t> head(nc);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::uint32_t b = s.offsets[f], e = s.offsets[f + 1];
+    for (std::uint32_t c = b; c + 1 < e; ++c) head[c] = s.indices[c + 1];
+    head[e - 1] = s.indices[b];
+  }
+  std::vector<std::uint32_t> twin = std::move(known_twin), border_out(np, k_none);
+  std::size_t ne = 0;
+  if (twin.empty()) twin = pair_corners(s);
+  for (std::size_t c = 0; c < nc; ++c) {
+    if (twin[c] == k_none) {
+      ++ne;
+      border_out[head[c]] = static_cast<std::uint32_t>(c);
+    } else if (twin[c] > c) {
+      ++ne;
+    }
+  }
+  reserve(g, static_cast<typename Traits::vertices_size_type>(np),
+          static_cast<typename Traits::edges_size_type>(ne), static_cast<typename Traits::faces_size_type>(nf));
+  auto points = get(vertex_point, g);
+  std::vector<V> vs(np);
+  for (std::size_t i = 0; i < np; ++i) {
+    vs[i] = add_vertex(g);
+    put(points, vs[i], from_eigen<point_t<G>>(s.points[i]));
+  }
+  std::vector<H> hc(nc, Traits::null_halfedge());
+  if (corner_edge) corner_edge->assign(nc, k_none);
+  std::uint32_t edge_number = 0;
+  for (std::size_t c = 0; c < nc; ++c) {
+    if (hc[c] != Traits::null_halfedge()) continue;
+    H h = halfedge(add_edge(g), g);
+    H o = opposite(h, g);
+    set_target(h, vs[head[c]], g);
+    set_target(o, vs[s.indices[c]], g);
+    hc[c] = h;
+    if (twin[c] != k_none) hc[twin[c]] = o;
+    else set_face(o, Traits::null_face(), g);
+    if (corner_edge) {
+      (*corner_edge)[c] = edge_number;
+      if (twin[c] != k_none) (*corner_edge)[twin[c]] = edge_number;
+    }
+    ++edge_number;
+  }
+  std::vector<char> vertex_set(np, 0);
+  for (std::size_t f = 0; f < nf; ++f) {
+    auto fd = add_face(g);
+    const std::uint32_t first = s.offsets[f], last = s.offsets[f + 1] - 1;
+    for (std::uint32_t c = first; c <= last; ++c) {
+      set_face(hc[c], fd, g);
+      set_next(hc[c], hc[c == last ? first : c + 1], g);
+      const std::uint32_t to = head[c];
+      if (!vertex_set[to]) {
+        vertex_set[to] = 1;
+        set_halfedge(vs[to], hc[c], g);
+      }
+    }
+    set_halfedge(fd, hc[last], g);
+  }
+  for (std::size_t c = 0; c < nc; ++c)
+    if (twin[c] == k_none) {
+      H b = opposite(hc[c], g);
+      const std::uint32_t v = s.indices[c];
+      set_next(b, opposite(hc[border_out[v]], g), g);
+      set_halfedge(vs[v], b, g);
+    }
+}
+
+/// The snapshot of the mesh build_refined(soup, g, twin) would make, taken
+/// from the soup directly (same numbering as snapshot(g) of that mesh), so
+/// that the levels of one call between the first and the last never build a
+/// mesh. soup_corner (if given) receives, per soup corner, its snapshot corner.
+inline Snapshot snapshot_of_soup(Polygon_soup&& soup, const std::vector<std::uint32_t>& twin,
+                                 std::vector<std::uint32_t>* soup_corner = nullptr) {
+  Snapshot s;
+  const std::size_t nv = soup.num_points(), nf = soup.num_faces(), nc = soup.indices.size();
+  s.points = std::move(soup.points);
+  s.face_begin.assign(soup.offsets.begin(), soup.offsets.end());
+  s.corner_vertex.resize(nc);
+  s.corner_face.resize(nc);
+  std::vector<std::uint32_t> remap(nc);
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    const std::uint32_t b = soup.offsets[f], n = soup.offsets[f + 1] - b;
+    std::uint32_t r = 0;
+    for (std::uint32_t k = 1; k < n; ++k)
+      if (soup.indices[b + k] < soup.indices[b + r]) r = k;
+    for (std::uint32_t k = 0; k < n; ++k) {
+      const std::uint32_t to = b + (k + n - r) % n;
+      remap[b + k] = to;
+      s.corner_vertex[to] = soup.indices[b + k];
+      s.corner_face[to] = f;
+    }
+  }
+  s.corner_twin.assign(nc, k_none);
+  for (std::size_t c = 0; c < nc; ++c)
+    if (twin[c] != k_none) s.corner_twin[remap[c]] = remap[twin[c]];
+  // edges in build_refined's creation order: first use, corner by corner
+  s.corner_edge.assign(nc, k_none);
+  s.border_edges.assign(nv, 0);
+  s.valence.assign(nv, 0);
+  s.vertex_corner.assign(nv, k_none);
+  for (std::size_t c = 0; c < nc; ++c) {
+    const std::uint32_t rc = remap[c];
+    if (s.corner_edge[rc] != k_none) continue;
+    const auto en = static_cast<std::uint32_t>(s.edge_corner.size());
+    s.edge_corner.push_back(rc);
+    s.corner_edge[rc] = en;
+    const std::uint32_t o = s.corner_twin[rc];
+    if (o != k_none) s.corner_edge[o] = en;
+    const std::uint32_t a = s.corner_vertex[rc], b = s.head(rc);
+    ++s.valence[a];
+    ++s.valence[b];
+    if (o == k_none) {
+      ++s.border_edges[a];
+      ++s.border_edges[b];
+    }
+  }
+  set_vertex_corners(s);
+  if (soup_corner) *soup_corner = std::move(remap);
+  return s;
+}
+
+/// Replaces g by the mesh of soup (built into a fresh G, then moved into g),
+/// and records the counts.
+template <class G>
+void rebuild(G& g, const Polygon_soup& soup, Subdivision_result& r, std::vector<std::uint32_t> twin = {},
+             std::vector<std::uint32_t>* corner_edge = nullptr) {
+  G fresh;
+  build_refined(soup, fresh, std::move(twin), corner_edge);
+  g = std::move(fresh);
+  ++r.levels_done;
+  r.vertices = soup.num_points();
+  r.faces = soup.num_faces();
+}
+
+/// Half i (0: from the corner's vertex, 1: to the next) of old corner c in the 1-to-4 split.
+inline std::uint32_t one_to_four_half(const Snapshot& s, std::uint32_t c, int i) {
+  const std::uint32_t f = s.corner_face[c], k = c - s.face_begin[f];
+  return i == 0 ? 12 * f + 3 * k : 12 * f + 3 * ((k + 1) % 3) + 2;
+}
+
+/// The twin of every corner of a 1-to-4 split (Loop, butterfly, midpoint on
+/// triangles), its faces made per old face (a, b, c) as (a, ab, ca),
+/// (b, bc, ab), (c, ca, bc), (ab, bc, ca): corner 12f + 3k + j.
+inline std::vector<std::uint32_t> one_to_four_twins(const Snapshot& s) {
+  const std::size_t nf = s.num_faces();
+  std::vector<std::uint32_t> twin(12 * nf, k_none);
+  auto first_half = [&](std::uint32_t c) {                          // v_k → mid: T_k corner 0
+    const std::uint32_t f = s.corner_face[c], k = c - s.face_begin[f];
+    return 12 * f + 3 * k;
+  };
+  auto second_half = [&](std::uint32_t c) {                         // mid → v_k+1: T_k+1 corner 2
+    const std::uint32_t f = s.corner_face[c], k = c - s.face_begin[f];
+    return 12 * f + 3 * ((k + 1) % 3) + 2;
+  };
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    const std::uint32_t b = 12 * f;
+    twin[b + 1] = b + 11, twin[b + 11] = b + 1;
+    twin[b + 4] = b + 9, twin[b + 9] = b + 4;
+    twin[b + 7] = b + 10, twin[b + 10] = b + 7;
+    for (std::uint32_t c = s.face_begin[f]; c < s.face_begin[f + 1]; ++c) {
+      const std::uint32_t t = s.corner_twin[c];
+      if (t == k_none) continue;
+      twin[first_half(c)] = second_half(t);
+      twin[second_half(c)] = first_half(t);
+    }
+  }
+  return twin;
+}
+
+/// Writes the faces of the 1-to-4 split of every (triangle) face into out,
+/// edge point of edge e numbered first_edge_point + e; see one_to_four_twins.
+inline void emit_one_to_four(const Snapshot& s, std::uint32_t first_edge_point, Polygon_soup& out) {
+  const std::size_t nf = s.num_faces();
+  out.indices.resize(12 * nf);
+  out.offsets.resize(4 * nf + 1);
+  for (std::size_t i = 0; i <= 4 * nf; ++i) out.offsets[i] = static_cast<Polygon_soup::Index>(3 * i);
+  std::uint32_t* o = out.indices.data();
+  for (std::uint32_t c0 = 0; c0 < 3 * nf; c0 += 3, o += 12) {
+    const std::uint32_t a = s.corner_vertex[c0], b = s.corner_vertex[c0 + 1], c = s.corner_vertex[c0 + 2];
+    const std::uint32_t ab = first_edge_point + s.corner_edge[c0], bc = first_edge_point + s.corner_edge[c0 + 1],
+                        ca = first_edge_point + s.corner_edge[c0 + 2];
+    const std::uint32_t f[12] = {a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca};
+    std::copy(f, f + 12, o);
+  }
+}
+
+/// Face centroids of the snapshot, in face order.
+inline std::vector<Eigen::Vector3d> face_centroids(const Snapshot& s) {
+  std::vector<Eigen::Vector3d> out(s.num_faces());
+  for (std::uint32_t f = 0; f < s.num_faces(); ++f) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (std::uint32_t c = s.face_begin[f]; c < s.face_begin[f + 1]; ++c) sum += s.points[s.corner_vertex[c]];
+    out[f] = sum / double(s.face_size(f));
+  }
+  return out;
+}
+
+/// Border vertex rule shared by the approximating schemes: cubic B-spline
+/// (1/8, 3/4, 1/8) on a regular border vertex, unchanged when fixed or at a
+/// border vertex with more than two border edges.
+inline Eigen::Vector3d border_vertex_point(const Snapshot& s, std::uint32_t v, Boundary_rule rule) {
+  if (rule == Boundary_rule::fixed || s.border_edges[v] != 2 || s.vertex_corner[v] == k_none) return s.points[v];
+  auto [a, b] = s.border_neighbours(v);
+  return (s.points[a] + 6.0 * s.points[v] + s.points[b]) / 8.0;
+}
+
+/// Creases at the vertices (DeRose, Kass, Truong 1998): per vertex the number
+/// of incident crease edges (sharpness > 0, border edges not counted), the sum
+/// of their sharpness and of their other ends.
+struct Crease_stars {
+  std::vector<std::uint32_t> count;
+  std::vector<double> sharpness;
+  std::vector<Eigen::Vector3d> ends;
+};
+
+inline Crease_stars crease_stars(const Snapshot& s, const std::vector<double>& sharp) {
+  Crease_stars cs{std::vector<std::uint32_t>(s.num_vertices(), 0), std::vector<double>(s.num_vertices(), 0.0),
+                  std::vector<Eigen::Vector3d>(s.num_vertices(), Eigen::Vector3d::Zero())};
+  for (std::uint32_t e = 0; e < s.num_edges(); ++e) {
+    if (sharp[e] <= 0 || s.is_border_edge(e)) continue;
+    const std::uint32_t c = s.edge_corner[e], a = s.corner_vertex[c], b = s.head(c);
+    ++cs.count[a], ++cs.count[b];
+    cs.sharpness[a] += sharp[e], cs.sharpness[b] += sharp[e];
+    cs.ends[a] += s.points[b], cs.ends[b] += s.points[a];
+  }
+  return cs;
+}
+
+/// The vertex point of interior vertex v given its smooth-rule point: the
+/// crease rule (p + 6v + q)/8 with two crease edges, the corner rule (v stays)
+/// with three or more, each blended with the smooth point by the mean
+/// sharpness when that is below 1; the smooth point with fewer than two.
+inline Eigen::Vector3d crease_vertex_point(const Snapshot& s, const Crease_stars& cs, std::uint32_t v,
+                                           const Eigen::Vector3d& smooth) {
+  const std::uint32_t k = cs.count[v];
+  if (k < 2) return smooth;
+  const Eigen::Vector3d sharp = k == 2 ? Eigen::Vector3d((cs.ends[v] + 6.0 * s.points[v]) / 8.0) : s.points[v];
+  const double mean = cs.sharpness[v] / k;
+  return mean >= 1.0 ? sharp : Eigen::Vector3d((1.0 - mean) * smooth + mean * sharp);
+}
+
+/// The edge point of interior edge e given its smooth-rule point.
+inline Eigen::Vector3d crease_edge_point(const Snapshot& s, double sharpness, std::uint32_t e,
+                                         const Eigen::Vector3d& smooth) {
+  if (sharpness <= 0) return smooth;
+  const std::uint32_t c = s.edge_corner[e];
+  const Eigen::Vector3d mid = 0.5 * (s.points[s.corner_vertex[c]] + s.points[s.head(c)]);
+  return sharpness >= 1.0 ? mid : Eigen::Vector3d((1.0 - sharpness) * smooth + sharpness * mid);
+}
+
+/// The sharpness of the edges of the refined mesh: both halves of an old edge
+/// of sharpness s get max(0, s − 1) (∞ stays ∞), new edges 0. half(c, i) is
+/// the refined corner of half i of old corner c.
+template <class Half>
+std::vector<double> child_sharpness(const Snapshot& s, const std::vector<double>& sharp,
+                                    const std::vector<std::uint32_t>& new_corner_edge, std::size_t new_edges,
+                                    Half half) {
+  std::vector<double> out(new_edges, 0.0);
+  for (std::uint32_t e = 0; e < s.num_edges(); ++e) {
+    if (sharp[e] <= 0) continue;
+    const std::uint32_t c = s.edge_corner[e];
+    const double child = std::max(0.0, sharp[e] - 1.0);
+    out[new_corner_edge[half(c, 0)]] = child;
+    out[new_corner_edge[half(c, 1)]] = child;
+  }
+  return out;
+}
+
+/// Checks a crease vector against the mesh's edge count.
+inline void check_creases(const std::vector<double>& sharp, std::size_t edges, const char* scheme) {
+  if (!sharp.empty() && sharp.size() != edges)
+    throw invalid_input(std::string(scheme) + ": crease_sharpness has " + std::to_string(sharp.size()) +
+                        " entries for " + std::to_string(edges) + " edges");
+}
+
+/// A refined level: its faces (and new points), and each corner's twin
+/// (empty: found by pair_corners).
+struct Refined {
+  Polygon_soup soup;
+  std::vector<std::uint32_t> twin;
+};
+
+/// Runs `iterations` levels on g: snapshot g once (refusing faces of another
+/// size than face_size, if not 0, before anything changes), then
+/// level(snapshot, i) → Refined per level; the levels before the last go from
+/// soup to snapshot directly, the last one rebuilds g. With creases (sharp not
+/// empty) the sharpness follows the edges: half(s, c, i) is the refined soup
+/// corner of half i of old corner c.
+template <class G, class Level, class Half>
+Subdivision_result run_levels(G& g, int iterations, const char* scheme, std::uint32_t face_size,
+                              std::vector<double>& sharp, Level level, Half half) {
+  if (iterations < 0) throw invalid_input(std::string(scheme) + ": iterations must be ≥ 0");
+  check_creases(sharp, static_cast<std::size_t>(num_edges(g)), scheme);
+  Subdivision_result r{0, static_cast<std::size_t>(num_vertices(g)), static_cast<std::size_t>(num_faces(g)), {}};
+  if (iterations > 0) {
+    Snapshot s = snapshot(g, scheme, face_size);
+    std::vector<std::uint32_t> corner_edge, remap;
+    for (int i = 0; i < iterations; ++i) {
+      Refined out = level(s, i);
+      std::size_t new_edges = 0;
+      if (i + 1 < iterations) {
+        if (out.twin.empty()) out.twin = pair_corners(out.soup);
+        Snapshot next = snapshot_of_soup(std::move(out.soup), out.twin, sharp.empty() ? nullptr : &remap);
+        if (!sharp.empty()) {
+          corner_edge.resize(remap.size());
+          for (std::size_t c = 0; c < remap.size(); ++c) corner_edge[c] = next.corner_edge[remap[c]];
+        }
+        new_edges = next.num_edges();
+        ++r.levels_done;
+        r.vertices = next.num_vertices();
+        r.faces = next.num_faces();
+        if (!sharp.empty())
+          sharp = child_sharpness(s, sharp, corner_edge, new_edges,
+                                  [&](std::uint32_t c, int h) { return half(s, c, h); });
+        s = std::move(next);
+      } else {
+        rebuild(g, out.soup, r, std::move(out.twin), sharp.empty() ? nullptr : &corner_edge);
+        if (!sharp.empty())
+          sharp = child_sharpness(s, sharp, corner_edge, static_cast<std::size_t>(num_edges(g)),
+                                  [&](std::uint32_t c, int h) { return half(s, c, h); });
+      }
+    }
+  }
+  r.edge_sharpness = sharp;
+  return r;
+}
+
+/// Writes limit positions into g after the last level: limit(s, v) for every
+/// vertex of s (= snapshot(g)), through g's point map in vertex order.
+template <class G, class Limit>
+void move_to_limit(G& g, const std::vector<double>& sharp, Limit limit) {
+  Snapshot s = snapshot(g, "limit positions");
+  const Crease_stars cs = sharp.empty() ? Crease_stars{} : crease_stars(s, sharp);
+  auto pts = get(vertex_point, g);
+  std::uint32_t v = 0;
+  for (auto vd : vertices(g)) {
+    Eigen::Vector3d p;
+    if (!sharp.empty() && !s.is_border_vertex(v) && cs.count[v] >= 2)
+      p = cs.count[v] == 2 ? Eigen::Vector3d((cs.ends[v] + 4.0 * s.points[v]) / 6.0) : s.points[v];
+    else
+      p = limit(s, v);
+    put(pts, vd, from_eigen<point_t<G>>(p));
+    ++v;
+  }
+}
+
+/// The limit position of a border vertex: the cubic B-spline limit
+/// (p + 4v + q)/6 for Boundary_rule::smooth, v for fixed or a corner.
+inline Eigen::Vector3d border_limit_point(const Snapshot& s, std::uint32_t v, Boundary_rule rule) {
+  if (rule == Boundary_rule::fixed || s.border_edges[v] != 2 || s.vertex_corner[v] == k_none) return s.points[v];
+  auto [a, b] = s.border_neighbours(v);
+  return (s.points[a] + 4.0 * s.points[v] + s.points[b]) / 6.0;
+}
+
+/// For schemes without creases.
+inline std::uint32_t no_half(const Snapshot&, std::uint32_t, int) { return 0; }
+
+template <class G>
+concept Subdividable = MutableFaceGraph<G> && FaceListGraph<G> && VertexListGraph<G> && EdgeListGraph<G> &&
+                       HasVertexPoints<G> && HasIndexMap<G, vertex_index_t> && HasIndexMap<G, halfedge_index_t> &&
+                       std::default_initializable<G> && std::movable<G>;
+
+} // namespace detail::subdivision
+} // namespace genmesh

@@ -1,0 +1,775 @@
+// Subdivision: every scheme on every backend (identical canonical soups),
+// exact counts and topological invariants, affine invariance, boundary rules,
+// refusals, and CGAL's Subdivision_method_3 as the oracle for Loop,
+// Catmull-Clark, √3 and Doo-Sabin on closed real meshes.
+#include "backends.h"
+
+#include <genmesh/generators.h>
+#include <genmesh/io.h>
+#include <genmesh/soup_to_mesh.h>
+#include <genmesh/subdivision.h>
+#include <genmesh/validity.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace {
+
+using genmesh::Polygon_soup;
+using genmesh_test::Backends;
+
+enum class Scheme { loop, loop_warren, catmull_clark, midpoint, sqrt3, doo_sabin, butterfly };
+constexpr Scheme all_schemes[] = {Scheme::loop,  Scheme::loop_warren, Scheme::catmull_clark, Scheme::midpoint,
+                                  Scheme::sqrt3, Scheme::doo_sabin,   Scheme::butterfly};
+
+bool takes_triangles_only(Scheme s) {
+  return s == Scheme::loop || s == Scheme::loop_warren || s == Scheme::sqrt3 || s == Scheme::butterfly;
+}
+
+template <class G>
+genmesh::Subdivision_result run(Scheme s, G& g, int levels,
+                                genmesh::Boundary_rule b = genmesh::Boundary_rule::smooth) {
+  switch (s) {
+  case Scheme::loop: return genmesh::loop_subdivision(g, {.iterations = levels, .boundary = b});
+  case Scheme::loop_warren:
+    return genmesh::loop_subdivision(
+        g, {.iterations = levels, .boundary = b, .weights = genmesh::Loop_weights::warren});
+  case Scheme::catmull_clark: return genmesh::catmull_clark_subdivision(g, {.iterations = levels, .boundary = b});
+  case Scheme::midpoint: return genmesh::midpoint_subdivision(g, {.iterations = levels});
+  case Scheme::sqrt3: return genmesh::sqrt3_subdivision(g, {.iterations = levels, .boundary = b});
+  case Scheme::doo_sabin: return genmesh::doo_sabin_subdivision(g, {.iterations = levels});
+  case Scheme::butterfly: return genmesh::butterfly_subdivision(g, {.iterations = levels});
+  }
+  return {};
+}
+
+std::string name(Scheme s) {
+  const char* n[] = {"loop", "loop_warren", "catmull_clark", "midpoint", "sqrt3", "doo_sabin", "butterfly"};
+  return n[static_cast<int>(s)];
+}
+
+template <class G>
+G mesh_of(const Polygon_soup& soup) {
+  G g;
+  genmesh::build_mesh(soup, g);
+  return g;
+}
+
+struct Named_soup {
+  std::string name;
+  Polygon_soup soup;
+};
+
+std::vector<Named_soup> inputs() {
+  Polygon_soup wedge; // one triangle and one quad sharing an edge: a mixed open mesh
+  wedge.add_point(0, 0, 0);
+  wedge.add_point(1, 0, 0);
+  wedge.add_point(1, 1, 0.5);
+  wedge.add_point(0, 1, 0);
+  wedge.add_point(2, 0.5, 0.25);
+  wedge.add_face({0, 1, 2, 3});
+  wedge.add_face({1, 4, 2});
+  return {{"tetrahedron", genmesh::make_tetrahedron()},
+          {"cube", genmesh::make_cube()},
+          {"icosphere", genmesh::make_icosphere(1)},
+          {"torus_quads", genmesh::make_torus(8, 6, false)},
+          {"torus_triangles", genmesh::make_torus(8, 6, true)},
+          {"grid", genmesh::make_grid(4, 3)},
+          {"grid_with_hole", genmesh::make_grid_with_hole(6)},
+          {"wedge", wedge}};
+}
+
+bool all_triangles(const Polygon_soup& s) {
+  for (std::size_t f = 0; f < s.num_faces(); ++f)
+    if (s.face_size(f) != 3) return false;
+  return true;
+}
+
+template <class G>
+std::size_t count_edges(const G& g) {
+  return static_cast<std::size_t>(num_edges(g));
+}
+
+template <class G, class Pick>
+std::vector<double> sharpness_where(const G& g, Pick pick, double value);
+
+template <class T>
+class Subdivision : public ::testing::Test {};
+TYPED_TEST_SUITE(Subdivision, Backends);
+
+// ---------------------------------------------------------------------------
+// Cross-backend: the same input gives the same canonical soup, bit for bit.
+
+TYPED_TEST(Subdivision, EveryBackendGivesTheSameSoupAsHalfedgeMesh) {
+  for (const auto& in : inputs())
+    for (Scheme s : all_schemes) {
+      if (takes_triangles_only(s) && !all_triangles(in.soup)) continue;
+      SCOPED_TRACE(in.name + " / " + name(s));
+      auto reference = mesh_of<genmesh_test::Halfedge_mesh>(in.soup);
+      auto g = mesh_of<TypeParam>(in.soup);
+      run(s, reference, 2);
+      run(s, g, 2);
+      EXPECT_EQ(genmesh::canonical(genmesh::to_soup(g)), genmesh::canonical(genmesh::to_soup(reference)));
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Counts per level and topological invariants (Euler characteristic, border
+// loops, validity).
+
+TYPED_TEST(Subdivision, CountsPerLevelAndInvariants) {
+  for (const auto& in : inputs())
+    for (Scheme s : all_schemes) {
+      if (takes_triangles_only(s) && !all_triangles(in.soup)) continue;
+      SCOPED_TRACE(in.name + " / " + name(s));
+      auto g = mesh_of<TypeParam>(in.soup);
+      const genmesh::Mesh_report before = genmesh::check_mesh(g);
+      for (int level = 1; level <= 2; ++level) {
+        const std::size_t V = num_vertices(g), E = count_edges(g), F = num_faces(g);
+        const genmesh::Mesh_report r0 = genmesh::check_mesh(g);
+        std::size_t corners = 0, non_triangles = 0, border_edges = r0.border_halfedges;
+        for (auto f : faces(g)) {
+          std::size_t n = 0;
+          auto h0 = halfedge(f, g), h = h0;
+          do ++n, h = next(h, g);
+          while (h != h0);
+          corners += n;
+          non_triangles += n != 3;
+        }
+        const auto res = run(s, g, 1);
+        const genmesh::Mesh_report r = genmesh::check_mesh(g);
+        ASSERT_TRUE(r.ok()) << "level " << level;
+        EXPECT_EQ(r.border_vertices_with_inner_halfedge, 0u); // as build_mesh leaves it
+        EXPECT_EQ(r.euler_characteristic, before.euler_characteristic);
+        EXPECT_EQ(r.boundary_loops, before.boundary_loops);
+        EXPECT_EQ(r.components, before.components);
+        EXPECT_EQ(res.levels_done, 1);
+        EXPECT_EQ(res.vertices, r.vertices);
+        EXPECT_EQ(res.faces, r.faces);
+        switch (s) {
+        case Scheme::loop: case Scheme::loop_warren: case Scheme::butterfly:
+          EXPECT_EQ(r.vertices, V + E);
+          EXPECT_EQ(r.faces, 4 * F);
+          EXPECT_EQ(r.edges, 2 * E + 3 * F);
+          break;
+        case Scheme::catmull_clark:
+          EXPECT_EQ(r.vertices, V + E + F);
+          EXPECT_EQ(r.faces, corners);
+          EXPECT_TRUE(r.is_quad_mesh);
+          break;
+        case Scheme::midpoint:
+          EXPECT_EQ(r.vertices, V + E + non_triangles);
+          EXPECT_EQ(r.faces, corners + (F - non_triangles)); // 4 per triangle = 3 corners + 1
+          break;
+        case Scheme::sqrt3:
+          EXPECT_EQ(r.vertices, V + F);
+          EXPECT_EQ(r.faces, 2 * E - border_edges); // two per interior edge, one per border edge
+          EXPECT_TRUE(r.is_triangle_mesh);
+          break;
+        case Scheme::doo_sabin: {
+          EXPECT_EQ(r.vertices, corners);
+          // a border loop has as many vertices as edges
+          const std::size_t interior_vertices = V - border_edges;
+          EXPECT_EQ(r.faces, F + (E - border_edges) + interior_vertices);
+          break;
+        }
+        }
+      }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Affine invariance: every mask is an affine combination, so a planar mesh
+// stays in its plane — interior, border and irregular vertices alike.
+
+TYPED_TEST(Subdivision, PlanarMeshesStayInTheirPlane) {
+  auto plane = [](const Eigen::Vector3d& p) { return 0.3 * p.x() - 0.2 * p.y() + 0.1; };
+  for (Polygon_soup base : {genmesh::make_grid(4, 4), genmesh::make_grid_with_hole(6)}) {
+    for (auto& p : base.points) p.z() = plane(p);
+    for (Scheme s : all_schemes)
+      for (auto b : {genmesh::Boundary_rule::smooth, genmesh::Boundary_rule::fixed}) {
+        SCOPED_TRACE(name(s));
+        auto g = mesh_of<TypeParam>(base);
+        run(s, g, 2, b);
+        for (const auto& p : genmesh::to_soup(g).points) EXPECT_NEAR(p.z(), plane(p), 1e-12);
+      }
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Border rules.
+
+TYPED_TEST(Subdivision, FixedBorderKeepsBorderVerticesAndSmoothBorderFollowsTheBSpline) {
+  // On the unit square grid the border is four straight lines: with either
+  // rule every new border point stays on the square's outline; with `fixed`
+  // old border vertices do not move, with `smooth` a border vertex moves to
+  // (prev + 6 v + next) / 8, which at a square corner cuts the corner.
+  const Polygon_soup base = genmesh::make_grid(3, 3);
+  for (Scheme s : {Scheme::loop, Scheme::catmull_clark}) {
+    SCOPED_TRACE(name(s));
+    auto fixed = mesh_of<TypeParam>(base);
+    auto smooth = mesh_of<TypeParam>(base);
+    run(s, fixed, 1, genmesh::Boundary_rule::fixed);
+    run(s, smooth, 1, genmesh::Boundary_rule::smooth);
+    const Polygon_soup f = genmesh::to_soup(fixed), m = genmesh::to_soup(smooth);
+    // old vertex 0 is the corner (0,0): its border neighbours are (1/3,0) and (0,1/3)
+    EXPECT_EQ(f.points[0], Eigen::Vector3d(0, 0, 0));
+    EXPECT_TRUE(m.points[0].isApprox(Eigen::Vector3d(1.0 / 24, 1.0 / 24, 0), 1e-15));
+    // old vertex 1 = (1/3, 0) sits on a straight border: B-spline keeps it
+    EXPECT_TRUE(m.points[1].isApprox(base.points[1], 1e-15));
+    const genmesh::Mesh_report r = genmesh::check_mesh(fixed);
+    EXPECT_EQ(r.boundary_loops, 1u);
+    // every border vertex of the fixed result lies on the outline of the unit square
+    auto on_outline = [](const Eigen::Vector3d& p) {
+      return std::abs(p.x()) < 1e-15 || std::abs(p.x() - 1) < 1e-15 || std::abs(p.y()) < 1e-15 ||
+             std::abs(p.y() - 1) < 1e-15;
+    };
+    auto pts = get(genmesh::vertex_point, fixed);
+    std::size_t border_vertices = 0;
+    for (auto h : halfedges(fixed))
+      if (face(h, fixed) == boost::graph_traits<TypeParam>::null_face()) {
+        ++border_vertices;
+        EXPECT_TRUE(on_outline(genmesh::to_eigen(get(pts, target(h, fixed)))));
+      }
+    EXPECT_EQ(border_vertices, 24u); // 12 old border edges, each split
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Scheme-specific properties.
+
+TYPED_TEST(Subdivision, InterpolatingSchemesKeepOldVertices) {
+  for (const auto& in : inputs()) {
+    for (Scheme s : {Scheme::butterfly, Scheme::midpoint}) {
+      if (takes_triangles_only(s) && !all_triangles(in.soup)) continue;
+      SCOPED_TRACE(in.name + " / " + name(s));
+      auto g = mesh_of<TypeParam>(in.soup);
+      run(s, g, 2);
+      const Polygon_soup out = genmesh::to_soup(g);
+      for (std::size_t i = 0; i < in.soup.num_points(); ++i) EXPECT_EQ(out.points[i], in.soup.points[i]);
+    }
+  }
+}
+
+TYPED_TEST(Subdivision, LoopWeightsAgreeAtValenceSixAndDifferElsewhere) {
+  // Loop's β and Warren's 3/(8n) are both 1/16 at valence 6 (every vertex of
+  // the triangulated torus), and differ at valence 5 (the icosphere).
+  {
+    auto a = mesh_of<TypeParam>(genmesh::make_torus(8, 6, true));
+    auto b = mesh_of<TypeParam>(genmesh::make_torus(8, 6, true));
+    for (auto v : vertices(a)) ASSERT_EQ(degree(v, a), 6u);
+    run(Scheme::loop, a, 1);
+    run(Scheme::loop_warren, b, 1);
+    const Polygon_soup sa = genmesh::to_soup(a), sb = genmesh::to_soup(b);
+    ASSERT_EQ(sa.num_points(), sb.num_points());
+    for (std::size_t i = 0; i < sa.num_points(); ++i) EXPECT_TRUE(sa.points[i].isApprox(sb.points[i], 1e-14));
+  }
+  {
+    auto a = mesh_of<TypeParam>(genmesh::make_icosphere(0));
+    auto b = mesh_of<TypeParam>(genmesh::make_icosphere(0));
+    run(Scheme::loop, a, 1);
+    run(Scheme::loop_warren, b, 1);
+    const Polygon_soup sa = genmesh::to_soup(a), sb = genmesh::to_soup(b);
+    // vertex 0 (valence 5): Loop's β = (5/8 − (3/8 + cos(72°)/4)²)/5, Warren's 3/40
+    const double c = 3.0 / 8 + std::cos(2 * std::numbers::pi / 5) / 4;
+    const double beta = (5.0 / 8 - c * c) / 5;
+    const Polygon_soup ico = genmesh::make_icosphere(0);
+    auto g = mesh_of<genmesh_test::Halfedge_mesh>(ico);
+    Eigen::Vector3d ring = Eigen::Vector3d::Zero();
+    auto pts = get(genmesh::vertex_point, g);
+    auto v0 = *vertices(g).begin();
+    for (auto h : CGAL::halfedges_around_target(halfedge(v0, g), g)) ring += genmesh::to_eigen(get(pts, source(h, g)));
+    EXPECT_TRUE(sa.points[0].isApprox((1 - 5 * beta) * ico.points[0] + beta * ring, 1e-14));
+    EXPECT_TRUE(sb.points[0].isApprox((1 - 5 * 3.0 / 40) * ico.points[0] + 3.0 / 40 * ring, 1e-14));
+    EXPECT_GT((sa.points[0] - sb.points[0]).norm(), 1e-6);
+  }
+}
+
+TYPED_TEST(Subdivision, OneCallOfTwoLevelsEqualsTwoCallsOfOne) {
+  // Inside one call the levels between the first and the last never build a
+  // mesh (the next snapshot comes from the refined soup); the result must be
+  // the mesh that rebuilding after every level gives. (√3 is left out: its
+  // border rule counts levels within a call; on closed meshes it is included.)
+  for (const auto& in : inputs())
+    for (Scheme s : all_schemes) {
+      if (takes_triangles_only(s) && !all_triangles(in.soup)) continue;
+      auto one = mesh_of<TypeParam>(in.soup);
+      if (s == Scheme::sqrt3 && !genmesh::check_mesh(one).is_closed) continue;
+      SCOPED_TRACE(in.name + " / " + name(s));
+      auto two = mesh_of<TypeParam>(in.soup);
+      run(s, one, 2);
+      run(s, two, 1);
+      run(s, two, 1);
+      EXPECT_EQ(genmesh::to_soup(one), genmesh::to_soup(two));
+    }
+  // creases carried across levels the same way
+  const Polygon_soup torus = genmesh::make_torus(8, 6, true);
+  auto one = mesh_of<TypeParam>(torus), two = mesh_of<TypeParam>(torus);
+  const auto sharp = sharpness_where(one, [](std::size_t v) { return v < 6; }, 1.5);
+  const auto r1 = genmesh::loop_subdivision(one, {.iterations = 2, .crease_sharpness = sharp});
+  const auto r2a = genmesh::loop_subdivision(two, {.iterations = 1, .crease_sharpness = sharp});
+  const auto r2b = genmesh::loop_subdivision(two, {.iterations = 1, .crease_sharpness = r2a.edge_sharpness});
+  EXPECT_EQ(genmesh::to_soup(one), genmesh::to_soup(two));
+  EXPECT_EQ(r1.edge_sharpness, r2b.edge_sharpness);
+}
+
+TYPED_TEST(Subdivision, EmptyMeshStaysEmpty) {
+  for (Scheme s : all_schemes) {
+    TypeParam g;
+    const auto r = run(s, g, 2);
+    EXPECT_EQ(r.levels_done, 2);
+    EXPECT_EQ(num_vertices(g), 0u);
+    EXPECT_EQ(num_faces(g), 0u);
+  }
+}
+
+TYPED_TEST(Subdivision, ZeroIterationsChangeNothing) {
+  for (Scheme s : all_schemes) {
+    auto g = mesh_of<TypeParam>(genmesh::make_icosphere(0));
+    const Polygon_soup before = genmesh::to_soup(g);
+    const auto r = run(s, g, 0);
+    EXPECT_EQ(r.levels_done, 0);
+    EXPECT_EQ(r.vertices, 12u);
+    EXPECT_EQ(r.faces, 20u);
+    EXPECT_EQ(genmesh::to_soup(g), before);
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Refusals leave the mesh untouched.
+
+TYPED_TEST(Subdivision, TriangleSchemesRefuseOtherFacesAndLeaveTheMeshUnchanged) {
+  Polygon_soup mixed = genmesh::make_icosphere(0);
+  mixed.add_point(5, 5, 5); // a separate quad: face 20
+  mixed.add_point(6, 5, 5);
+  mixed.add_point(6, 6, 5);
+  mixed.add_point(5, 6, 5);
+  mixed.add_face({12, 13, 14, 15});
+  for (Scheme s : {Scheme::loop, Scheme::sqrt3, Scheme::butterfly}) {
+    SCOPED_TRACE(name(s));
+    auto g = mesh_of<TypeParam>(mixed);
+    const Polygon_soup before = genmesh::to_soup(g);
+    try {
+      run(s, g, 1);
+      ADD_FAILURE() << "not refused";
+    } catch (const genmesh::invalid_input& e) {
+      EXPECT_NE(std::string(e.what()).find("face 20 has 4 sides"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(genmesh::to_soup(g), before);
+    EXPECT_TRUE(genmesh::check_mesh(g).ok());
+  }
+  auto g = mesh_of<TypeParam>(mixed);
+  EXPECT_THROW(genmesh::catmull_clark_subdivision(g, {.iterations = -1}), genmesh::invalid_input);
+}
+
+// ---------------------------------------------------------------------------
+// Oracle: CGAL's Subdivision_method_3 on a Surface_mesh read by CGAL gives the
+// same points (as multisets, to 1e-12 relative to the bounding box).
+
+using Sm = genmesh_test::Surface_mesh;
+
+std::vector<Eigen::Vector3d> points_of(Sm& sm) {
+  std::vector<Eigen::Vector3d> out;
+  for (auto v : vertices(sm)) out.push_back(genmesh::to_eigen(sm.point(v)));
+  return out;
+}
+
+// Every point of a has a distinct partner in b within tol (greedy nearest in x-sorted order).
+void expect_same_point_sets(std::vector<Eigen::Vector3d> a, std::vector<Eigen::Vector3d> b, double tol) {
+  ASSERT_EQ(a.size(), b.size());
+  auto by_x = [](const Eigen::Vector3d& p, const Eigen::Vector3d& q) { return p.x() < q.x(); };
+  std::sort(b.begin(), b.end(), by_x);
+  std::vector<char> used(b.size(), 0);
+  std::size_t unmatched = 0;
+  for (const auto& p : a) {
+    auto lo = std::lower_bound(b.begin(), b.end(), Eigen::Vector3d(p.x() - tol, 0, 0), by_x);
+    std::size_t best = b.size();
+    double best_d = tol;
+    for (auto it = lo; it != b.end() && it->x() <= p.x() + tol; ++it) {
+      std::size_t i = static_cast<std::size_t>(it - b.begin());
+      double d = (*it - p).lpNorm<Eigen::Infinity>();
+      if (!used[i] && d <= best_d) best = i, best_d = d;
+    }
+    if (best == b.size()) ++unmatched;
+    else used[best] = 1;
+  }
+  EXPECT_EQ(unmatched, 0u);
+}
+
+double box_size(const std::vector<Eigen::Vector3d>& pts) {
+  Eigen::Vector3d lo = pts[0], hi = pts[0];
+  for (const auto& p : pts) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return (hi - lo).maxCoeff();
+}
+
+void compare_with_cgal(Sm& cgal, genmesh_test::Halfedge_mesh& g, Scheme s, int levels) {
+  const auto np = CGAL::parameters::number_of_iterations(static_cast<unsigned>(levels));
+  switch (s) {
+  case Scheme::loop: CGAL::Subdivision_method_3::Loop_subdivision(cgal, np); break;
+  case Scheme::catmull_clark: CGAL::Subdivision_method_3::CatmullClark_subdivision(cgal, np); break;
+  case Scheme::sqrt3: CGAL::Subdivision_method_3::Sqrt3_subdivision(cgal, np); break;
+  case Scheme::doo_sabin: CGAL::Subdivision_method_3::DooSabin_subdivision(cgal, np); break;
+  default: FAIL();
+  }
+  cgal.collect_garbage(); // CGAL's Doo-Sabin leaves removed elements, which its num_* count
+  run(s, g, levels);
+  EXPECT_EQ(num_vertices(g), num_vertices(cgal));
+  EXPECT_EQ(num_faces(g), num_faces(cgal));
+  EXPECT_EQ(num_edges(g), num_edges(cgal));
+  const auto ours = genmesh::to_soup(g).points;
+  expect_same_point_sets(ours, points_of(cgal), 1e-12 * box_size(ours));
+}
+
+void oracle(const std::string& file, Scheme s, int levels) {
+  SCOPED_TRACE(file + " / " + name(s));
+  Sm cgal;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(genmesh_test::real_mesh(file), cgal));
+  ASSERT_TRUE(CGAL::is_closed(cgal));
+  genmesh_test::Halfedge_mesh g;
+  genmesh::read_mesh(genmesh_test::real_mesh(file), g);
+  ASSERT_TRUE(genmesh::check_mesh(g).is_closed);
+  compare_with_cgal(cgal, g, s, levels);
+}
+
+TEST(SubdivisionOracle, LoopEqualsCgal) {
+  oracle("sphere.off", Scheme::loop, 2);
+  oracle("eight.off", Scheme::loop, 1);
+}
+
+TEST(SubdivisionOracle, CatmullClarkEqualsCgal) {
+  oracle("sphere.off", Scheme::catmull_clark, 2);
+  oracle("eight.off", Scheme::catmull_clark, 1);
+  oracle("cube_quad.off", Scheme::catmull_clark, 3);
+}
+
+TEST(SubdivisionOracle, Sqrt3EqualsCgal) {
+  oracle("sphere.off", Scheme::sqrt3, 2);
+  oracle("eight.off", Scheme::sqrt3, 1);
+}
+
+TEST(SubdivisionOracle, DooSabinEqualsCgal) {
+  oracle("sphere.off", Scheme::doo_sabin, 2);
+  oracle("eight.off", Scheme::doo_sabin, 1);
+  oracle("cube_quad.off", Scheme::doo_sabin, 2);
+}
+
+} // namespace
+
+namespace {
+
+// Meshes with a border: Loop and Catmull-Clark use the same border rules as
+// CGAL (midpoints; 1/8, 3/4, 1/8), √3 the same Kobbelt border rule at odd
+// levels, so the results agree there too. (Doo-Sabin has no border rule.)
+TEST(SubdivisionOracle, LoopCatmullClarkAndSqrt3EqualCgalOnMeshesWithBorders) {
+  Polygon_soup annulus = genmesh::make_grid_with_hole(9);
+  for (auto& p : annulus.points) p.z() = std::sin(3 * p.x()) * std::cos(2 * p.y());
+  Polygon_soup quads = genmesh::make_torus(6, 5, false);
+  quads.offsets.resize(quads.offsets.size() - 5); // drop the last ring of quads: a tube, two border loops
+  quads.indices.resize(quads.offsets.back());
+  for (Scheme s : {Scheme::loop, Scheme::catmull_clark, Scheme::sqrt3})
+    for (const Polygon_soup* in : {&annulus, &quads}) {
+      if (s != Scheme::catmull_clark && in == &quads) continue;
+      SCOPED_TRACE(name(s));
+      auto cgal = mesh_of<Sm>(*in);
+      auto g = mesh_of<genmesh_test::Halfedge_mesh>(*in);
+      ASSERT_EQ(genmesh::check_mesh(g).boundary_loops, 2u);
+      compare_with_cgal(cgal, g, s, s == Scheme::sqrt3 ? 4 : 2); // √3: two border refinements
+    }
+}
+
+TYPED_TEST(Subdivision, Sqrt3RefinesTheBorderEverySecondLevel) {
+  // grid 3 × 3: 12 border edges. Level 0 keeps them; level 1 splits each in three.
+  auto g = mesh_of<TypeParam>(genmesh::make_grid(3, 3));
+  genmesh::sqrt3_subdivision(g, {.iterations = 1});
+  EXPECT_EQ(genmesh::check_mesh(g).border_halfedges, 12u);
+  auto h = mesh_of<TypeParam>(genmesh::make_grid(3, 3));
+  genmesh::sqrt3_subdivision(h, {.iterations = 2});
+  const genmesh::Mesh_report r = genmesh::check_mesh(h);
+  EXPECT_TRUE(r.ok());
+  EXPECT_EQ(r.border_halfedges, 36u);
+  EXPECT_EQ(r.euler_characteristic, 1);
+  auto k = mesh_of<TypeParam>(genmesh::make_grid(3, 3));
+  genmesh::sqrt3_subdivision(k, {.iterations = 2, .boundary = genmesh::Boundary_rule::fixed});
+  EXPECT_EQ(genmesh::check_mesh(k).border_halfedges, 12u);
+}
+
+} // namespace
+
+namespace {
+
+// Butterfly: OpenMesh's ModifiedButterflyT has the same masks, including its
+// border handling (four-point rule; eight-point with reflected wings next to
+// the border), so the results agree on closed meshes and on meshes with borders.
+struct Om_traits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+using Om_mesh = OpenMesh::TriMesh_ArrayKernelT<Om_traits>;
+
+void butterfly_oracle(const Polygon_soup& in, int levels) {
+  Om_mesh om;
+  std::vector<Om_mesh::VertexHandle> vh;
+  for (const auto& p : in.points) vh.push_back(om.add_vertex(Om_mesh::Point(p.x(), p.y(), p.z())));
+  for (std::size_t f = 0; f < in.num_faces(); ++f) {
+    auto c = in.face(f);
+    ASSERT_TRUE(om.add_face(vh[c[0]], vh[c[1]], vh[c[2]]).is_valid());
+  }
+  OpenMesh::Subdivider::Uniform::ModifiedButterflyT<Om_mesh> subdivider;
+  subdivider.attach(om);
+  subdivider(static_cast<std::size_t>(levels));
+  subdivider.detach();
+  std::vector<Eigen::Vector3d> theirs;
+  for (auto v : om.vertices()) theirs.emplace_back(om.point(v)[0], om.point(v)[1], om.point(v)[2]);
+
+  auto g = mesh_of<genmesh_test::Halfedge_mesh>(in);
+  genmesh::butterfly_subdivision(g, {.iterations = levels});
+  ASSERT_EQ(static_cast<std::size_t>(num_faces(g)), om.n_faces());
+  const auto ours = genmesh::to_soup(g).points;
+  expect_same_point_sets(ours, theirs, 1e-12 * box_size(ours));
+}
+
+TEST(SubdivisionOracle, ButterflyEqualsOpenMesh) {
+  {
+    SCOPED_TRACE("sphere.off");
+    butterfly_oracle(genmesh::read_soup(genmesh_test::real_mesh("sphere.off")), 2);
+  }
+  {
+    SCOPED_TRACE("eight.off");
+    butterfly_oracle(genmesh::read_soup(genmesh_test::real_mesh("eight.off")), 1);
+  }
+  {
+    SCOPED_TRACE("icosphere (valence 5 and 6)");
+    butterfly_oracle(genmesh::make_icosphere(1), 2);
+  }
+  {
+    SCOPED_TRACE("annulus with two borders");
+    Polygon_soup annulus = genmesh::make_grid_with_hole(9);
+    for (auto& p : annulus.points) p.z() = std::sin(3 * p.x()) * std::cos(2 * p.y());
+    butterfly_oracle(annulus, 2);
+  }
+}
+
+} // namespace
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// Creases (DeRose, Kass, Truong 1998).
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+// Sharpness per edge (edge iteration order): `value` on the edges whose both
+// ends satisfy `pick` (by vertex number), 0 elsewhere.
+template <class G, class Pick>
+std::vector<double> sharpness_where(const G& g, Pick pick, double value) {
+  std::vector<double> s;
+  auto vi = get(genmesh::vertex_index, g);
+  for (auto e : edges(g)) {
+    auto h = halfedge(e, g);
+    const auto a = static_cast<std::size_t>(get(vi, source(h, g)));
+    const auto b = static_cast<std::size_t>(get(vi, target(h, g)));
+    s.push_back(pick(a) && pick(b) ? value : 0.0);
+  }
+  return s;
+}
+
+// The crease vertices of g: ends of edges whose sharpness (result order) is > 0.
+template <class G>
+std::vector<Eigen::Vector3d> crease_points(G& g, const std::vector<double>& sharp) {
+  std::vector<Eigen::Vector3d> out;
+  std::vector<char> seen(index_bound(genmesh::vertex_index, g), 0);
+  auto vi = get(genmesh::vertex_index, g);
+  auto pts = get(genmesh::vertex_point, g);
+  std::size_t i = 0;
+  for (auto e : edges(g)) {
+    if (sharp.at(i++) <= 0) continue;
+    for (auto v : {source(halfedge(e, g), g), target(halfedge(e, g), g)}) {
+      auto k = static_cast<std::size_t>(get(vi, v));
+      if (!seen[k]) seen[k] = 1, out.push_back(genmesh::to_eigen(get(pts, v)));
+    }
+  }
+  return out;
+}
+
+// Cubic B-spline subdivision of a closed polygon, `levels` times.
+std::vector<Eigen::Vector3d> bspline(std::vector<Eigen::Vector3d> p, int levels) {
+  for (int l = 0; l < levels; ++l) {
+    const std::size_t n = p.size();
+    std::vector<Eigen::Vector3d> q;
+    for (std::size_t j = 0; j < n; ++j) {
+      q.push_back((p[(j + n - 1) % n] + 6 * p[j] + p[(j + 1) % n]) / 8);
+      q.push_back((p[j] + p[(j + 1) % n]) / 2);
+    }
+    p = q;
+  }
+  return p;
+}
+
+TYPED_TEST(Subdivision, SharpCreasesFollowTheBSplineOfTheirControlPolygon) {
+  // Ring i = 0 of the torus (vertices 0 .. sides-1, a closed polygon) made
+  // infinitely sharp: its vertices then evolve by the cubic B-spline rules
+  // alone, whatever the surface around them does.
+  const int rings = 8, sides = 6;
+  for (bool triangles : {true, false}) {
+    SCOPED_TRACE(triangles ? "Loop" : "Catmull-Clark");
+    const Polygon_soup torus = genmesh::make_torus(rings, sides, triangles);
+    auto g = mesh_of<TypeParam>(torus);
+    const auto sharp = sharpness_where(g, [&](std::size_t v) { return v < std::size_t(sides); }, inf);
+    ASSERT_EQ(std::count(sharp.begin(), sharp.end(), inf), sides);
+    const auto r = triangles ? genmesh::loop_subdivision(g, {.iterations = 2, .crease_sharpness = sharp})
+                             : genmesh::catmull_clark_subdivision(g, {.iterations = 2, .crease_sharpness = sharp});
+    ASSERT_EQ(r.edge_sharpness.size(), static_cast<std::size_t>(num_edges(g)));
+    EXPECT_EQ(std::count(r.edge_sharpness.begin(), r.edge_sharpness.end(), inf), 4 * sides);
+    EXPECT_TRUE(genmesh::check_mesh(g).ok());
+    std::vector<Eigen::Vector3d> ring(torus.points.begin(), torus.points.begin() + sides);
+    expect_same_point_sets(crease_points(g, r.edge_sharpness), bspline(ring, 2), 1e-12);
+  }
+}
+
+TYPED_TEST(Subdivision, SharpCubeEdgesStayStraight) {
+  // Every edge of the cube infinitely sharp: the corners (three creases) stay,
+  // and every crease vertex stays on its cube edge (two coordinates at ±1).
+  auto g = mesh_of<TypeParam>(genmesh::make_cube());
+  const std::vector<double> sharp(12, inf);
+  const auto r = genmesh::catmull_clark_subdivision(g, {.iterations = 3, .crease_sharpness = sharp});
+  const auto pts = crease_points(g, r.edge_sharpness);
+  EXPECT_EQ(pts.size(), 8u + 12u * 7u); // corners + 7 new points per cube edge
+  for (const auto& p : pts) {
+    int at_bound = 0;
+    for (int i = 0; i < 3; ++i) at_bound += std::abs(std::abs(p[i]) - 1.0) < 1e-15;
+    EXPECT_GE(at_bound, 2) << p.transpose();
+  }
+  const Polygon_soup out = genmesh::to_soup(g);
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(out.points[i], genmesh::make_cube().points[i]);
+  // without creases the corners are cut
+  auto smooth = mesh_of<TypeParam>(genmesh::make_cube());
+  genmesh::catmull_clark_subdivision(smooth, {.iterations = 1});
+  EXPECT_LT(genmesh::to_soup(smooth).points[0].norm(), std::sqrt(3.0) - 0.1);
+}
+
+TYPED_TEST(Subdivision, SemiSharpCreasesBlendAndDecrement) {
+  // Sharpness 1/2 on the ring: after one level every point is the mean of the
+  // smooth (0) and the sharp (∞) results — same numbering in all three; with
+  // sharpness 3/2 the halves carry 1/2 into the next level.
+  for (bool triangles : {true, false}) {
+    SCOPED_TRACE(triangles ? "Loop" : "Catmull-Clark");
+    const Polygon_soup torus = genmesh::make_torus(8, 6, triangles);
+    std::vector<Polygon_soup> out;
+    std::vector<double> first_sharp;
+    for (double s : {0.0, inf, 0.5}) {
+      auto g = mesh_of<TypeParam>(torus);
+      const auto sharp = sharpness_where(g, [](std::size_t v) { return v < 6; }, s);
+      if (triangles) genmesh::loop_subdivision(g, {.iterations = 1, .crease_sharpness = sharp});
+      else genmesh::catmull_clark_subdivision(g, {.iterations = 1, .crease_sharpness = sharp});
+      out.push_back(genmesh::to_soup(g));
+    }
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < out[0].num_points(); ++i) {
+      EXPECT_TRUE(out[2].points[i].isApprox(0.5 * (out[0].points[i] + out[1].points[i]), 1e-14));
+      differ += (out[0].points[i] - out[1].points[i]).norm() > 1e-9;
+    }
+    EXPECT_GT(differ, 0u);
+    auto g = mesh_of<TypeParam>(torus);
+    const auto sharp = sharpness_where(g, [](std::size_t v) { return v < 6; }, 1.5);
+    const auto r = triangles ? genmesh::loop_subdivision(g, {.iterations = 1, .crease_sharpness = sharp})
+                             : genmesh::catmull_clark_subdivision(g, {.iterations = 1, .crease_sharpness = sharp});
+    EXPECT_EQ(std::count(r.edge_sharpness.begin(), r.edge_sharpness.end(), 0.5), 12);
+    EXPECT_EQ(std::count(r.edge_sharpness.begin(), r.edge_sharpness.end(), 0.0),
+              static_cast<std::ptrdiff_t>(r.edge_sharpness.size()) - 12);
+  }
+}
+
+TYPED_TEST(Subdivision, CreasesByVertexPairs) {
+  // the cube's 4 edges around z = -1 (vertices 0, 1, 3, 2), named by vertex pairs
+  auto g = mesh_of<TypeParam>(genmesh::make_cube());
+  const std::vector<genmesh::Crease> c = {{0, 1, inf}, {3, 1, inf}, {3, 2, 2.5}, {0, 2, 0.5}};
+  const auto sharp = genmesh::crease_sharpness(g, std::span<const genmesh::Crease>(c));
+  ASSERT_EQ(sharp.size(), 12u);
+  std::vector<double> expected(12, 0.0);
+  auto vi = get(genmesh::vertex_index, g);
+  std::size_t i = 0;
+  for (auto e : edges(g)) {
+    auto a = get(vi, source(halfedge(e, g), g)), b = get(vi, target(halfedge(e, g), g));
+    for (const auto& k : c)
+      if ((k.a == a && k.b == b) || (k.a == b && k.b == a)) expected[i] = k.sharpness;
+    ++i;
+  }
+  EXPECT_EQ(sharp, expected);
+  EXPECT_EQ(std::count(sharp.begin(), sharp.end(), 0.0), 8);
+  const std::vector<genmesh::Crease> diagonal = {{0, 3, 1.0}}; // not an edge
+  EXPECT_THROW(genmesh::crease_sharpness(g, std::span<const genmesh::Crease>(diagonal)), genmesh::invalid_input);
+}
+
+TYPED_TEST(Subdivision, CreaseVectorOfTheWrongSizeIsRefused) {
+  auto g = mesh_of<TypeParam>(genmesh::make_cube());
+  const Polygon_soup before = genmesh::to_soup(g);
+  EXPECT_THROW(genmesh::catmull_clark_subdivision(g, {.crease_sharpness = std::vector<double>(11, 1.0)}),
+               genmesh::invalid_input);
+  EXPECT_EQ(genmesh::to_soup(g), before);
+}
+
+} // namespace
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// Limit positions: a vertex's limit does not change under further
+// subdivision, so projecting after k + 1 levels gives, at the vertices of
+// level k, the positions projecting after k levels gives.
+
+TYPED_TEST(Subdivision, LimitPositionsAreInvariantUnderSubdivision) {
+  struct Case {
+    std::string name;
+    Polygon_soup soup;
+    bool loop;
+    bool crease_ring; // ring of the torus (vertices 0..5) infinitely sharp
+  };
+  Polygon_soup bumpy = genmesh::make_grid_with_hole(6);
+  for (auto& p : bumpy.points) p.z() = std::sin(3 * p.x()) * std::cos(2 * p.y());
+  const std::vector<Case> cases = {
+      {"icosphere", genmesh::make_icosphere(1), true, false},
+      {"torus", genmesh::make_torus(8, 6, true), true, true},
+      {"annulus", bumpy, true, false},
+      {"cube", genmesh::make_cube(), false, false},
+      {"torus_quads", genmesh::make_torus(8, 6, false), false, true},
+      {"annulus", bumpy, false, false},
+  };
+  for (const auto& k : cases) {
+    SCOPED_TRACE(k.name + (k.loop ? " / Loop" : " / Catmull-Clark"));
+    std::vector<Polygon_soup> out;
+    std::size_t old_vertices = 0;
+    for (int levels : {1, 2}) {
+      auto g = mesh_of<TypeParam>(k.soup);
+      const auto sharp = k.crease_ring ? sharpness_where(g, [](std::size_t v) { return v < 6; }, inf)
+                                       : std::vector<double>{};
+      if (k.loop) genmesh::loop_subdivision(g, {.iterations = levels, .crease_sharpness = sharp, .limit = true});
+      else genmesh::catmull_clark_subdivision(g, {.iterations = levels, .crease_sharpness = sharp, .limit = true});
+      out.push_back(genmesh::to_soup(g));
+      if (levels == 1) old_vertices = out.back().num_points();
+    }
+    auto plain = mesh_of<TypeParam>(k.soup);
+    if (k.loop) genmesh::loop_subdivision(plain, {.iterations = 1});
+    else genmesh::catmull_clark_subdivision(plain, {.iterations = 1});
+    const Polygon_soup unprojected = genmesh::to_soup(plain);
+    std::size_t moved = 0;
+    for (std::size_t i = 0; i < old_vertices; ++i) {
+      EXPECT_TRUE(out[1].points[i].isApprox(out[0].points[i], 1e-12)) << i;
+      moved += (unprojected.points[i] - out[0].points[i]).norm() > 1e-9;
+    }
+    EXPECT_GT(moved, old_vertices / 2); // the projection does move vertices
+  }
+}
+
+} // namespace
