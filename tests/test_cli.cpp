@@ -212,3 +212,88 @@ TEST(Cli, FailedConvertLeavesExistingOutputIntact) {
 }
 
 } // namespace
+
+namespace {
+
+// `subdivide` on both backends: the counts Loop's and Catmull-Clark's
+// topology dictates, the same numbers on both, and the written file reads
+// back with them.
+TEST(Cli, SubdivideGivesTheSchemesCountsOnEveryBackend) {
+  const std::string in = real_mesh("elephant.off");
+  Cli_run ref = genmesh("info --json " + in);
+  ASSERT_EQ(ref.exit_code, 0) << ref.err;
+  const long long v = json_int(ref.out, "vertices"), e = json_int(ref.out, "edges"),
+                  f = json_int(ref.out, "faces");
+  for (const char* backend : {"halfedge", "surface-mesh"}) {
+    SCOPED_TRACE(backend);
+    const std::string out = tmp_path(std::string("loop_") + backend + ".ply");
+    Cli_run r = genmesh("subdivide " + in + " " + out + " --scheme loop --levels 1 --binary --json --backend " +
+                        backend);
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_EQ(json_int(r.out, "vertices"), v + e);  // one new vertex per edge
+    EXPECT_EQ(json_int(r.out, "faces"), 4 * f);     // 1-to-4
+    EXPECT_EQ(json_int(r.out, "euler_characteristic"), v - e + f);
+    Cli_run back = genmesh("info --json " + out);
+    ASSERT_EQ(back.exit_code, 0) << back.err;
+    EXPECT_EQ(json_int(back.out, "vertices"), v + e);
+  }
+  // Catmull-Clark on quads: V' = V + E + F, F' = Σ deg(f) = 4F for quads.
+  Cli_run cc = genmesh("subdivide " + real_mesh("cube_quad.off") + " " + tmp_path("cc.off") +
+                       " --scheme catmull-clark --levels 2 --json");
+  ASSERT_EQ(cc.exit_code, 0) << cc.err;
+  EXPECT_EQ(json_int(cc.out, "faces"), 6 * 4 * 4);
+  EXPECT_EQ(json_int(cc.out, "vertices"), 98);  // 8+12+6 = 26 after one level; 26+48+24 after two
+}
+
+TEST(Cli, SubdivideRefusesWhatTheSchemeCannotTake) {
+  const std::string quads = real_mesh("cube_quad.off");
+  Cli_run loop = genmesh("subdivide " + quads + " " + tmp_path("x.off") + " --scheme loop");
+  EXPECT_EQ(loop.exit_code, 2);
+  EXPECT_NE(loop.err.find("face 0"), std::string::npos) << loop.err;
+
+  EXPECT_EQ(genmesh("subdivide " + quads + " " + tmp_path("x.off") + " --scheme nonsense").exit_code, 2);
+  EXPECT_EQ(genmesh("subdivide " + quads + " " + tmp_path("x.off")).exit_code, 2);  // no --scheme
+  EXPECT_EQ(genmesh("subdivide " + quads + " " + tmp_path("x.off") + " --scheme loop --levels x").exit_code, 2);
+
+  const std::string creases = tmp_path("creases.txt");
+  write_file(creases, "0 1 inf\n1 2 oops\n");
+  Cli_run bad = genmesh("subdivide " + quads + " " + tmp_path("x.off") +
+                        " --scheme catmull-clark --creases " + creases);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("creases.txt:2:"), std::string::npos) << bad.err;
+}
+
+// Infinitely sharp creases on all 12 edges of a cube make every vertex a
+// corner (three crease edges): the edges stay straight, the faces flat, so
+// the result is still exactly the cube's surface.
+TEST(Cli, SharpCreasesKeepTheCube) {
+  const std::string creases = tmp_path("cube_edges.txt");
+  // The edges of cube_quad.off's faces 0374 3267 2156 1045 4765 0123.
+  write_file(creases, "0 3 inf\n3 7 inf\n7 4 inf\n4 0 inf\n3 2 inf\n2 6 inf\n6 7 inf\n"
+                      "2 1 inf\n1 5 inf\n5 6 inf\n1 0 inf\n4 5 inf\n");
+  const std::string out = tmp_path("creased.obj");
+  Cli_run r = genmesh("subdivide " + real_mesh("cube_quad.off") + " " + out +
+                      " --scheme catmull-clark --levels 3 --creases " + creases);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  std::istringstream obj(read_file(out));
+  int vertices = 0, on_cube_edges = 0;
+  for (std::string line; std::getline(obj, line);) {
+    if (line.rfind("v ", 0) != 0) continue;
+    std::istringstream ls(line.substr(2));
+    double c[3];
+    ls >> c[0] >> c[1] >> c[2];
+    ++vertices;
+    int at_one = 0;
+    double max_abs = 0;
+    for (double x : c) {
+      at_one += std::abs(std::abs(x) - 1.0) < 1e-12;
+      max_abs = std::max(max_abs, std::abs(x));
+    }
+    EXPECT_NEAR(max_abs, 1.0, 1e-12) << line;  // on the cube's surface
+    on_cube_edges += at_one >= 2;
+  }
+  EXPECT_EQ(vertices, 386);            // 8 + 12·7 + 6·7² after three levels
+  EXPECT_EQ(on_cube_edges, 8 + 12 * 7); // every edge cut into 8 straight segments
+}
+
+} // namespace

@@ -4,6 +4,8 @@
 //   genmesh check FILE     [--backend B] [--json] [--repair]
 //                                                   full validity report
 //   genmesh convert IN OUT [--backend B] [--json] [--binary] [--repair]
+//   genmesh subdivide IN OUT --scheme S --levels N [--boundary smooth|fixed]
+//                          [--creases FILE] [--backend B] [--json]
 //   genmesh demo           [--json]                 every backend on built-in meshes
 //
 // Exit codes: 0 ok; 1 the mesh is invalid (reported on stdout); 2 bad input or
@@ -15,18 +17,23 @@
 #include <genmesh/io.h>
 #include <genmesh/local_operations.h>
 #include <genmesh/soup_to_mesh.h>
+#include <genmesh/subdivision.h>
 #include <genmesh/validity.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <unistd.h>
 #include <functional>
 #include <iostream>
 #include <map>
 #include <optional>
 #include <random>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -50,12 +57,17 @@ const char* usage_text =
     "  info FILE          counts and topology of a mesh\n"
     "  check FILE         validity report (soup problems, halfedge invariants)\n"
     "  convert IN OUT     read IN, build a valid mesh, write OUT (format from extension)\n"
+    "  subdivide IN OUT   subdivide IN, write OUT\n"
     "  demo               run genmesh on built-in meshes on every backend\n"
     "options:\n"
     "  --backend halfedge|surface-mesh   mesh type to build (default halfedge)\n"
     "  --json             one-line machine-readable record\n"
     "  --repair           repair a non-manifold or inconsistently oriented soup\n"
-    "  --binary           binary output (PLY, STL) for convert\n"
+    "  --binary           binary output (PLY, STL) for convert and subdivide\n"
+    "  --scheme S         loop|catmull-clark|sqrt3|doo-sabin|butterfly|midpoint\n"
+    "  --levels N         subdivision levels (default 1)\n"
+    "  --boundary B       smooth|fixed border rule (loop, catmull-clark, sqrt3)\n"
+    "  --creases FILE     lines 'u v sharpness' (input vertex indices; inf = sharp)\n"
     "formats: OFF, OBJ, PLY (ASCII, binary), STL (ASCII, binary)\n";
 
 struct Args {
@@ -65,6 +77,10 @@ struct Args {
   bool json = false;
   bool repair = false;
   bool binary = false;
+  std::string scheme;
+  int levels = 1;
+  std::string boundary = "smooth";
+  std::string creases;
 };
 
 Args parse(int argc, char** argv) {
@@ -85,6 +101,22 @@ Args parse(int argc, char** argv) {
       }
       if (a.backend != "halfedge" && a.backend != "surface-mesh")
         throw usage_error("unknown backend '" + a.backend + "' (halfedge|surface-mesh)");
+    } else if (s == "--scheme" || s == "--levels" || s == "--boundary" || s == "--creases") {
+      if (i + 1 >= argc) throw usage_error(s + " needs a value");
+      const std::string v = argv[++i];
+      if (s == "--scheme") a.scheme = v;
+      else if (s == "--boundary") a.boundary = v;
+      else if (s == "--creases") a.creases = v;
+      else {
+        std::size_t used = 0;
+        try {
+          a.levels = std::stoi(v, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used != v.size() || a.levels < 0 || a.levels > 12)
+          throw usage_error("--levels takes a whole number from 0 to 12, got '" + v + "'");
+      }
     } else if (s.size() > 1 && s[0] == '-') {
       throw usage_error("unknown option '" + s + "'");
     } else {
@@ -92,12 +124,24 @@ Args parse(int argc, char** argv) {
     }
   }
   const std::map<std::string, std::size_t> files_needed{
-      {"info", 1}, {"check", 1}, {"convert", 2}, {"demo", 0}};
+      {"info", 1}, {"check", 1}, {"convert", 2}, {"subdivide", 2}, {"demo", 0}};
   auto it = files_needed.find(a.command);
   if (it == files_needed.end()) throw usage_error("unknown command '" + a.command + "'");
   if (a.files.size() != it->second)
     throw usage_error("'" + a.command + "' takes " + std::to_string(it->second) + " file argument" +
                       (it->second == 1 ? "" : "s") + ", got " + std::to_string(a.files.size()));
+  if (a.command == "subdivide") {
+    static const std::vector<std::string> schemes{"loop", "catmull-clark", "sqrt3",
+                                                  "doo-sabin", "butterfly", "midpoint"};
+    if (a.scheme.empty()) throw usage_error("subdivide needs --scheme");
+    if (std::find(schemes.begin(), schemes.end(), a.scheme) == schemes.end())
+      throw usage_error("unknown scheme '" + a.scheme +
+                        "' (loop|catmull-clark|sqrt3|doo-sabin|butterfly|midpoint)");
+    if (a.boundary != "smooth" && a.boundary != "fixed")
+      throw usage_error("unknown boundary rule '" + a.boundary + "' (smooth|fixed)");
+    if (!a.creases.empty() && a.scheme != "loop" && a.scheme != "catmull-clark")
+      throw usage_error("--creases applies to loop and catmull-clark only");
+  }
   return a;
 }
 
@@ -234,6 +278,112 @@ int cmd_convert(const Args& a) {
   });
 }
 
+// ---- subdivide ---------------------------------------------------------------
+
+// Reads a crease file: one "u v sharpness" line per edge, u and v input vertex
+// indices, sharpness a number >= 0 or "inf"; '#' starts a comment. Whether
+// u-v is an edge of the mesh is checked by genmesh::crease_sharpness.
+std::vector<genmesh::Crease> read_creases(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw genmesh::io_error(path, "cannot open crease file");
+  std::vector<genmesh::Crease> creases;
+  std::string line;
+  for (std::uint64_t n = 1; std::getline(in, line); ++n) {
+    if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    std::istringstream ls(line);
+    std::string u_text, v_text, sharpness_text, extra;
+    if (!(ls >> u_text)) continue;  // blank line
+    if (!(ls >> v_text >> sharpness_text) || (ls >> extra))
+      throw genmesh::io_error(path, "expected 'u v sharpness'", n);
+    genmesh::Crease c;
+    try {
+      std::size_t used_u = 0, used_v = 0;
+      const unsigned long u = std::stoul(u_text, &used_u), v = std::stoul(v_text, &used_v);
+      if (used_u != u_text.size() || used_v != v_text.size() || u > UINT32_MAX || v > UINT32_MAX)
+        throw std::invalid_argument("index");
+      c.a = static_cast<std::uint32_t>(u);
+      c.b = static_cast<std::uint32_t>(v);
+    } catch (const std::exception&) {
+      throw genmesh::io_error(path, "malformed vertex index in '" + line + "'", n);
+    }
+    try {
+      std::size_t used = 0;
+      c.sharpness = sharpness_text == "inf" ? INFINITY : std::stod(sharpness_text, &used);
+      if (sharpness_text != "inf" && used != sharpness_text.size()) throw std::invalid_argument("sharpness");
+    } catch (const std::exception&) {
+      throw genmesh::io_error(path, "malformed sharpness '" + sharpness_text + "'", n);
+    }
+    creases.push_back(c);
+  }
+  return creases;
+}
+
+// One call of the chosen scheme.
+template <class Mesh>
+genmesh::Subdivision_result subdivide_once(Mesh& mesh, const Args& a, int levels,
+                                           std::vector<double> sharpness) {
+  const auto boundary = a.boundary == "fixed" ? genmesh::Boundary_rule::fixed : genmesh::Boundary_rule::smooth;
+  if (a.scheme == "loop")
+    return genmesh::loop_subdivision(
+        mesh, {.iterations = levels, .boundary = boundary, .crease_sharpness = std::move(sharpness)});
+  if (a.scheme == "catmull-clark")
+    return genmesh::catmull_clark_subdivision(
+        mesh, {.iterations = levels, .boundary = boundary, .crease_sharpness = std::move(sharpness)});
+  if (a.scheme == "sqrt3")
+    return genmesh::sqrt3_subdivision(mesh, {.iterations = levels, .boundary = boundary});
+  if (a.scheme == "doo-sabin") return genmesh::doo_sabin_subdivision(mesh, {.iterations = levels});
+  if (a.scheme == "butterfly") return genmesh::butterfly_subdivision(mesh, {.iterations = levels});
+  return genmesh::midpoint_subdivision(mesh, {.iterations = levels});
+}
+
+int cmd_subdivide(const Args& a) {
+  genmesh::Polygon_soup soup = genmesh::read_soup(a.files[0]);
+  const std::vector<genmesh::Crease> creases =
+      a.creases.empty() ? std::vector<genmesh::Crease>{} : read_creases(a.creases);
+  const bool progress = !a.json && isatty(STDERR_FILENO);
+  return with_backend(a.backend, [&](auto& mesh) {
+    genmesh::build_mesh(soup, mesh, {.repair = a.repair});
+    std::vector<double> sharpness;
+    if (!creases.empty()) {
+      try {
+        sharpness = genmesh::crease_sharpness(mesh, std::span<const genmesh::Crease>(creases));
+      } catch (const genmesh::invalid_input& e) {
+        throw genmesh::io_error(a.creases, e.what());
+      }
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    genmesh::Subdivision_result result;
+    if (a.scheme == "sqrt3") {
+      // √3's border rule alternates within one call: the levels go together.
+      if (progress) std::fprintf(stderr, "sqrt3: %d levels...\n", a.levels);
+      result = subdivide_once(mesh, a, a.levels, {});
+    } else {
+      for (int level = 0; level < a.levels; ++level) {
+        if (progress)
+          std::fprintf(stderr, "\r%s: level %d/%d", a.scheme.c_str(), level + 1, a.levels);
+        result = subdivide_once(mesh, a, 1, std::move(sharpness));
+        sharpness = std::move(result.edge_sharpness);
+      }
+      if (progress) std::fprintf(stderr, "\n");
+      result.levels_done = a.levels;
+    }
+    const double seconds = seconds_since(t0);
+    genmesh::Mesh_report report = genmesh::check_mesh(mesh);
+    genmesh::write_mesh(a.files[1], mesh, {.binary = a.binary});
+    if (a.json) {
+      std::cout << "{\"command\":\"subdivide\",\"file\":\"" << json_escape(a.files[0])
+                << "\",\"output\":\"" << json_escape(a.files[1]) << "\",\"backend\":\"" << a.backend
+                << "\",\"scheme\":\"" << a.scheme << "\",\"levels\":" << result.levels_done << ","
+                << json_counts(report) << ",\"seconds\":" << seconds << "}\n";
+    } else {
+      std::cout << a.files[0] << " -> " << a.files[1] << ": " << a.scheme << " x" << result.levels_done
+                << ", " << report.vertices << " vertices, " << report.faces << " faces, " << seconds
+                << " s\n";
+    }
+    return report.ok() ? exit_ok : exit_invalid;
+  });
+}
+
 // ---- demo ------------------------------------------------------------------
 
 struct Demo_row {
@@ -261,9 +411,16 @@ void random_local_operations(Mesh& mesh, unsigned seed, int count) {
   }
 }
 
-// The demo's steps: "build" (soup → mesh), "ops" (random local operations).
-// Later algorithms (subdivision, simplification, remeshing) add theirs here.
-const std::vector<std::string> demo_steps{"build", "ops"};
+// The demo's steps: "build" (soup → mesh), "ops" (random local operations),
+// "subdiv" (two levels of Loop on triangle meshes, of Catmull-Clark on the
+// others). Later algorithms (simplification, remeshing) add theirs here.
+const std::vector<std::string> demo_steps{"build", "ops", "subdiv"};
+
+bool all_triangles(const genmesh::Polygon_soup& soup) {
+  for (std::size_t f = 0; f < soup.num_faces(); ++f)
+    if (soup.face_size(f) != 3) return false;
+  return true;
+}
 
 // One step of the demo on one backend: builds the mesh, runs the step, checks.
 template <class Mesh>
@@ -273,6 +430,10 @@ Demo_row run_step(const std::string& mesh_name, const std::string& backend, cons
   const auto t0 = std::chrono::steady_clock::now();
   genmesh::build_mesh(input, mesh);
   if (step == "ops") random_local_operations(mesh, 2026, 300);
+  if (step == "subdiv") {
+    if (all_triangles(input)) genmesh::loop_subdivision(mesh, {.iterations = 2});
+    else genmesh::catmull_clark_subdivision(mesh, {.iterations = 2});
+  }
   Demo_row row{mesh_name, backend, step, genmesh::check_mesh(mesh), {}, 0};
   row.seconds = seconds_since(t0);
   row.result = genmesh::canonical(genmesh::to_soup(mesh));
@@ -337,6 +498,7 @@ int main(int argc, char** argv) {
     Args a = parse(argc, argv);
     if (a.command == "demo") return cmd_demo(a);
     if (a.command == "convert") return cmd_convert(a);
+    if (a.command == "subdivide") return cmd_subdivide(a);
     return cmd_info_or_check(a);
   } catch (const usage_error& e) {
     std::cerr << "genmesh: " << e.what() << "\n" << usage_text;
