@@ -1,6 +1,7 @@
 // Bytes per triangle of each backend, measured by counting the heap bytes a
 // mesh holds after it is built from the same soup (every allocation of the
-// process goes through the counting operator new below).
+// process goes through the counting operator new below, which also keeps the
+// peak other benchmarks read through heap_counter.h).
 //
 //   build/benchmarks/genmesh_benchmarks --benchmark_filter=Memory
 #include <genmesh/adaptors/cgal.h>
@@ -18,16 +19,27 @@
 #include <cstdlib>
 #include <new>
 
+#include "heap_counter.h"
+
 namespace {
 std::atomic<long long> live_bytes{0};
+std::atomic<long long> peak_bytes{0};
 } // namespace
+
+long long genmesh_bench::live_bytes() { return ::live_bytes.load(); }
+long long genmesh_bench::peak_bytes() { return ::peak_bytes.load(); }
+void genmesh_bench::reset_peak() { ::peak_bytes.store(::live_bytes.load()); }
 
 // Each block carries its size in a 16-byte header so delete can subtract it.
 void* operator new(std::size_t n) {
   void* p = std::malloc(n + 16);
   if (!p) throw std::bad_alloc();
   *static_cast<std::size_t*>(p) = n;
-  live_bytes.fetch_add(static_cast<long long>(n), std::memory_order_relaxed);
+  const long long now = live_bytes.fetch_add(static_cast<long long>(n), std::memory_order_relaxed) +
+                        static_cast<long long>(n);
+  long long peak = peak_bytes.load(std::memory_order_relaxed);
+  while (now > peak && !peak_bytes.compare_exchange_weak(peak, now, std::memory_order_relaxed)) {
+  }
   return static_cast<char*>(p) + 16;
 }
 void operator delete(void* p) noexcept {

@@ -5,7 +5,8 @@
 //   genmesh_benchmarks --benchmark_filter=Subdivision --benchmark_repetitions=5
 //                      --benchmark_report_aggregates_only=true
 //
-// The input is read from $GENMESH_DATA_DIR/meshes (default /root/.cache/genmesh/data).
+// The input is read from $GENMESH_DATA_DIR/meshes (default: the build's data folder).
+// peak_MB is the heap peak above the input copy while subdividing.
 // Each iteration subdivides a fresh copy of the input (the copy is not timed).
 #include <genmesh/adaptors/cgal.h>
 #include <genmesh/halfedge_mesh.h>
@@ -18,6 +19,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "heap_counter.h"
+
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -28,9 +31,9 @@ using Surface_mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_construct
 using Halfedge_mesh = genmesh::Halfedge_mesh<>;
 
 std::string armadillo() {
-  // GENMESH_DATA_DIR in the environment, else where scripts/run.sh setup puts the data
+  // GENMESH_DATA_DIR in the environment, else the build's data folder
   const char* dir = std::getenv("GENMESH_DATA_DIR");
-  return (std::filesystem::path(dir ? dir : "/root/.cache/genmesh/data") / "meshes" / "armadillo.off").string();
+  return (std::filesystem::path(dir ? dir : GENMESH_DATA_DIR) / "meshes" / "armadillo.off").string();
 }
 
 template <class G>
@@ -50,9 +53,12 @@ template <class G, Scheme S, Impl I>
 void BM_Subdivision(benchmark::State& state) {
   const int levels = S == Scheme::loop ? 3 : 2;
   std::size_t faces = 0;
+  long long peak = 0;
   for (auto _ : state) {
     state.PauseTiming();
     G g = input<G>();
+    const long long before = genmesh_bench::live_bytes();
+    genmesh_bench::reset_peak();
     state.ResumeTiming();
     if constexpr (I == Impl::genmesh) {
       if constexpr (S == Scheme::loop) genmesh::loop_subdivision(g, {.iterations = levels});
@@ -63,12 +69,14 @@ void BM_Subdivision(benchmark::State& state) {
       else CGAL::Subdivision_method_3::CatmullClark_subdivision(g, np);
     }
     benchmark::DoNotOptimize(g);
+    peak = genmesh_bench::peak_bytes() - before;
     faces = static_cast<std::size_t>(num_faces(g));
     state.PauseTiming();
     { G discard = std::move(g); } // destruction not timed
     state.ResumeTiming();
   }
   state.counters["faces_out"] = static_cast<double>(faces);
+  state.counters["peak_MB"] = static_cast<double>(peak) / 1e6;
 }
 
 BENCHMARK(BM_Subdivision<Halfedge_mesh, Scheme::loop, Impl::genmesh>)
