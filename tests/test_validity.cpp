@@ -362,6 +362,25 @@ TYPED_TEST(Validity, CorruptTargetFaceAndHalfedgeLinksAreNamed) {
   }
 }
 
+// Two triangles touching only at vertex 0 (a bow-tie):
+//
+//   1---2
+//    \ /
+//     0
+//    / \   .
+//   3---4
+Polygon_soup bow_tie_soup() {
+  Polygon_soup s;
+  s.add_point(0, 0, 0);
+  s.add_point(-1, 1, 0);
+  s.add_point(1, 1, 0);
+  s.add_point(-1, -1, 0);
+  s.add_point(1, -1, 0);
+  s.add_face({0, 2, 1});
+  s.add_face({0, 3, 4});
+  return s;
+}
+
 TYPED_TEST(Validity, NonManifoldVertexInAValidStructureIsNotManifold) {
   // The bow-tie below, built with its vertex split (0 and 5), then merged
   // back by hand: every pointer invariant holds, but two fans meet at 0.
@@ -371,14 +390,7 @@ TYPED_TEST(Validity, NonManifoldVertexInAValidStructureIsNotManifold) {
   //     0
   //    / \   .
   //   3---4
-  Polygon_soup s;
-  s.add_point(0, 0, 0);
-  s.add_point(-1, 1, 0);
-  s.add_point(1, 1, 0);
-  s.add_point(-1, -1, 0);
-  s.add_point(1, -1, 0);
-  s.add_face({0, 2, 1});
-  s.add_face({0, 3, 4});
+  Polygon_soup s = bow_tie_soup();
   TypeParam g;
   genmesh::build_mesh(s, g, {.repair = true}); // 0 split into 0 and 5
   std::vector<genmesh::vertex_descriptor_t<TypeParam>> vs(vertices(g).begin(), vertices(g).end());
@@ -505,14 +517,7 @@ TYPED_TEST(Validity, BowTieIsNamedRefusedAndSplit) {
   //     0
   //    / \        .
   //   3---4
-  Polygon_soup s;
-  s.add_point(0, 0, 0);
-  s.add_point(-1, 1, 0);
-  s.add_point(1, 1, 0);
-  s.add_point(-1, -1, 0);
-  s.add_point(1, -1, 0);
-  s.add_face({0, 2, 1});
-  s.add_face({0, 3, 4});
+  Polygon_soup s = bow_tie_soup();
   auto sr = genmesh::check_soup(s);
   EXPECT_EQ(sr.non_manifold_vertices, 1u);
   EXPECT_EQ(sr.non_manifold_edges + sr.inconsistent_edges + sr.degenerate_faces, 0u);

@@ -39,31 +39,25 @@ inline std::size_t ply_size(Ply_type t) {
 }
 inline bool ply_is_integer(Ply_type t) { return t != Ply_type::float32 && t != Ply_type::float64; }
 
-/// A binary value as double (coordinates) ...
-inline double ply_load_double(const char* p, Ply_type t, bool little) {
+/// A binary value of type t at p, converted to R: double for coordinates,
+/// std::int64_t for counts and indices (only integer types are read so).
+template <class R>
+R ply_load_as(const char* p, Ply_type t, bool little) {
   switch (t) {
-    case Ply_type::int8: return static_cast<std::int8_t>(*p);
-    case Ply_type::uint8: return static_cast<std::uint8_t>(*p);
-    case Ply_type::int16: return load<std::int16_t>(p, little);
-    case Ply_type::uint16: return load<std::uint16_t>(p, little);
-    case Ply_type::int32: return load<std::int32_t>(p, little);
-    case Ply_type::uint32: return load<std::uint32_t>(p, little);
-    case Ply_type::float32: return load<float>(p, little);
-    case Ply_type::float64: return load<double>(p, little);
+    case Ply_type::int8: return static_cast<R>(static_cast<std::int8_t>(*p));
+    case Ply_type::uint8: return static_cast<R>(static_cast<std::uint8_t>(*p));
+    case Ply_type::int16: return static_cast<R>(load<std::int16_t>(p, little));
+    case Ply_type::uint16: return static_cast<R>(load<std::uint16_t>(p, little));
+    case Ply_type::int32: return static_cast<R>(load<std::int32_t>(p, little));
+    case Ply_type::uint32: return static_cast<R>(load<std::uint32_t>(p, little));
+    case Ply_type::float32: return static_cast<R>(load<float>(p, little));
+    case Ply_type::float64: return static_cast<R>(load<double>(p, little));
   }
-  return 0;
+  return R{};
 }
-/// ... and as an integer (counts and indices; only integer types get here).
+inline double ply_load_double(const char* p, Ply_type t, bool little) { return ply_load_as<double>(p, t, little); }
 inline std::int64_t ply_load_int(const char* p, Ply_type t, bool little) {
-  switch (t) {
-    case Ply_type::int8: return static_cast<std::int8_t>(*p);
-    case Ply_type::uint8: return static_cast<std::uint8_t>(*p);
-    case Ply_type::int16: return load<std::int16_t>(p, little);
-    case Ply_type::uint16: return load<std::uint16_t>(p, little);
-    case Ply_type::int32: return load<std::int32_t>(p, little);
-    case Ply_type::uint32: return load<std::uint32_t>(p, little);
-    default: return 0;
-  }
+  return ply_load_as<std::int64_t>(p, t, little);
 }
 
 struct Ply_property {
