@@ -631,6 +631,35 @@ TYPED_TEST(Local_operations, VisitorSeesSuccessesOnly) {
   expect_ok(g);
 }
 
+// A visitor whose namespace supplies a native flip that always refuses: it
+// proves the operation objects dispatch to genmesh_native_<operation> found
+// by argument-dependent lookup (as a backend's own is found through its mesh
+// type) instead of running the generic code.
+namespace native_probe {
+struct Probe : genmesh::Mutation_visitor {
+  int native_flips = 0;
+};
+template <class H, class G>
+std::optional<H> genmesh_native_flip_edge(H, G&, Probe& probe) {
+  ++probe.native_flips;
+  return std::nullopt;
+}
+} // namespace native_probe
+
+TYPED_TEST(Local_operations, NativeOperationsOverrideTheGenericOnes) {
+  using G = TypeParam;
+  G g = make<G>(square());
+  const Polygon_soup before = genmesh::canonical(genmesh::to_soup(g));
+  native_probe::Probe probe;
+  EXPECT_TRUE(genmesh::can_flip_edge(he(g, 0, 2), g));       // the generic flip would succeed,
+  EXPECT_FALSE(genmesh::flip_edge(he(g, 0, 2), g, probe));    // the native one refuses
+  EXPECT_EQ(probe.native_flips, 1);
+  EXPECT_EQ(genmesh::canonical(genmesh::to_soup(g)), before);
+  EXPECT_TRUE(genmesh::split_edge_and_triangulate(he(g, 0, 1), g, probe));  // no native split: generic
+  EXPECT_EQ(probe.native_flips, 1);
+  expect_ok(g);
+}
+
 // ---------------------------------------------------------------------------
 // Equality with CGAL::Euler and across backends; random stress
 // ---------------------------------------------------------------------------

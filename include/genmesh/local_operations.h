@@ -888,11 +888,23 @@ std::size_t triangulate_faces(G& g, Visitor&& visitor = {}) {
 // dependent lookup: CGAL's own unqualified calls (CGAL::Euler::collapse_edge
 // calls join_face(h, g)) on a genmesh mesh never pick them up, and the
 // MutableFaceGraph concept's remove_face(f, g) still means the backend's.
+//
+// A backend overrides an operation natively (the incidence mesh stores no
+// next/prev to set) by providing, next to its graph traits, a free function
+// genmesh_native_<operation>(same arguments) found by argument-dependent
+// lookup, e.g. genmesh_native_flip_edge(h, g, visitor). It must keep the
+// operation's contract (same result, same refusals, mesh untouched on
+// refusal); the typed tests hold it to that.
 
 #define GENMESH_LOCAL_OPERATION(name)                                                   \
-  inline constexpr auto name = []<class... Args>(Args&&... args)                         \
-      -> decltype(detail::lo::name(std::forward<Args>(args)...)) {                        \
-    return detail::lo::name(std::forward<Args>(args)...);                                \
+  inline constexpr auto name = []<class... Args>(Args&&... args) -> decltype(auto)        \
+    requires requires { genmesh_native_##name(std::forward<Args>(args)...); } ||         \
+             requires { detail::lo::name(std::forward<Args>(args)...); }                 \
+  {                                                                                     \
+    if constexpr (requires { genmesh_native_##name(std::forward<Args>(args)...); })      \
+      return genmesh_native_##name(std::forward<Args>(args)...);                         \
+    else                                                                                \
+      return detail::lo::name(std::forward<Args>(args)...);                              \
   };
 GENMESH_LOCAL_OPERATION(can_flip_edge)
 GENMESH_LOCAL_OPERATION(flip_edge)
