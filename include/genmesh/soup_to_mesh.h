@@ -73,6 +73,89 @@ inline std::string refusal(const Soup_report& r) {
          "it):\n" + to_string(r);
 }
 
+/// Builds the empty g from soup s whose corners are already paired — the
+/// linking half of build_mesh(), shared with the subdivision schemes, which
+/// pair corners from their refinement pattern. twin[c] is the corner running
+/// along c's edge the other way (k_null on the border); border_out[v] is the
+/// border corner ending at v (whose opposite halfedge leaves v); ne is the
+/// number of edges. Edges are created corner by corner at their first use,
+/// halfedge(f) targets f's first corner, halfedge(v) is v's incoming border
+/// halfedge on the border and its first incoming halfedge otherwise.
+/// corner_edge, if given, receives each corner's edge number in creation
+/// order. Never throws but for allocation. Returns the number of border
+/// halfedges.
+template <class G>
+  requires MutableFaceGraph<G> && HasVertexPoints<G>
+std::size_t link_soup(const Polygon_soup& s, const std::vector<std::uint32_t>& twin,
+                      const std::vector<std::uint32_t>& border_out, std::size_t ne, G& g,
+                      std::vector<std::uint32_t>* corner_edge = nullptr) {
+  using H = halfedge_descriptor_t<G>;
+  using V = vertex_descriptor_t<G>;
+  using Traits = boost::graph_traits<G>;
+  const std::size_t np = s.num_points(), nf = s.num_faces(), nc = s.indices.size();
+  reserve(g, static_cast<typename Traits::vertices_size_type>(np),
+          static_cast<typename Traits::edges_size_type>(ne), static_cast<typename Traits::faces_size_type>(nf));
+
+  auto points = get(vertex_point, g);
+  std::vector<V> vs(np);
+  for (std::size_t i = 0; i < np; ++i) {
+    vs[i] = add_vertex(g);
+    put(points, vs[i], from_eigen<point_t<G>>(s.points[i]));
+  }
+
+  // Halfedge of each corner c: from c's vertex to the next corner's.
+  std::vector<H> hc(nc, Traits::null_halfedge());
+  if (corner_edge) corner_edge->assign(nc, k_null);
+  std::uint32_t edge_number = 0;
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::uint32_t first = s.offsets[f], last = s.offsets[f + 1] - 1;
+    for (std::uint32_t c = first; c <= last; ++c) {
+      if (hc[c] != Traits::null_halfedge()) continue; // made with its twin
+      H h = halfedge(add_edge(g), g);
+      H o = opposite(h, g);
+      set_target(h, vs[s.indices[c == last ? first : c + 1]], g);
+      set_target(o, vs[s.indices[c]], g);
+      hc[c] = h;
+      if (twin[c] != k_null) hc[twin[c]] = o;
+      else set_face(o, Traits::null_face(), g);
+      if (corner_edge) {
+        (*corner_edge)[c] = edge_number;
+        if (twin[c] != k_null) (*corner_edge)[twin[c]] = edge_number;
+      }
+      ++edge_number;
+    }
+  }
+
+  // Faces, their cycles, and halfedge(v) = the first incoming halfedge.
+  std::vector<char> vertex_set(np, 0);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto fd = add_face(g);
+    const std::uint32_t first = s.offsets[f], last = s.offsets[f + 1] - 1;
+    for (std::uint32_t c = first; c <= last; ++c) {
+      set_face(hc[c], fd, g);
+      set_next(hc[c], hc[c == last ? first : c + 1], g);
+      const std::uint32_t to = s.indices[c == last ? first : c + 1];
+      if (!vertex_set[to]) {
+        vertex_set[to] = 1;
+        set_halfedge(vs[to], hc[c], g);
+      }
+    }
+    set_halfedge(fd, hc[last], g); // targets the first corner
+  }
+
+  // Border cycles; a border vertex's halfedge becomes its incoming border halfedge.
+  std::size_t border_halfedges = 0;
+  for (std::uint32_t c = 0; c < nc; ++c)
+    if (twin[c] == k_null) {
+      H b = opposite(hc[c], g); // from c's next corner to c's vertex v
+      const std::uint32_t v = s.indices[c];
+      set_next(b, opposite(hc[border_out[v]], g), g);
+      set_halfedge(vs[v], b, g);
+      ++border_halfedges;
+    }
+  return border_halfedges;
+}
+
 } // namespace detail
 
 /// Builds g, which must be empty, from soup; see the header comment for the
@@ -83,10 +166,6 @@ template <class G>
   requires MutableFaceGraph<G> && HasVertexPoints<G>
 Build_report build_mesh(const Polygon_soup& soup, G& g, const Build_options& options = {}) {
   using namespace detail;
-  using H = halfedge_descriptor_t<G>;
-  using V = vertex_descriptor_t<G>;
-  using F = face_descriptor_t<G>;
-  using Traits = boost::graph_traits<G>;
 
   if (num_vertices(g) != 0 || num_faces(g) != 0 || num_halfedges(g) != 0)
     throw invalid_input("build_mesh: the target mesh is not empty (" + std::to_string(num_vertices(g)) +
@@ -145,60 +224,7 @@ Build_report build_mesh(const Polygon_soup& soup, G& g, const Build_options& opt
   }
 
   // Nothing below throws (but for allocation): g is built whole or not at all.
-  reserve(g, static_cast<typename Traits::vertices_size_type>(np),
-          static_cast<typename Traits::edges_size_type>(ne), static_cast<typename Traits::faces_size_type>(nf));
-
-  auto points = get(vertex_point, g);
-  std::vector<V> vs;
-  vs.reserve(np);
-  for (std::size_t i = 0; i < np; ++i) {
-    V v = add_vertex(g);
-    put(points, v, from_eigen<point_t<G>>(s.points[i]));
-    vs.push_back(v);
-  }
-
-  // Halfedge of each corner c: the halfedge from corner c's vertex to the next corner's.
-  std::vector<H> hc(nc, Traits::null_halfedge());
-  for (std::size_t f = 0; f < nf; ++f) {
-    for (std::uint32_t c = s.offsets[f]; c < s.offsets[f + 1]; ++c) {
-      if (hc[c] != Traits::null_halfedge()) continue; // made with its twin
-      std::uint32_t from = s.indices[c], to = s.indices[next_corner(s, static_cast<std::uint32_t>(f), c)];
-      H h = halfedge(add_edge(g), g);
-      H o = opposite(h, g);
-      set_target(h, vs[to], g);
-      set_target(o, vs[from], g);
-      hc[c] = h;
-      if (twin[c] != k_null) hc[twin[c]] = o;
-      else set_face(o, Traits::null_face(), g);
-    }
-  }
-
-  // Faces, their cycles, and halfedge(v) = the first incoming halfedge.
-  std::vector<char> vertex_set(np, 0);
-  for (std::size_t f = 0; f < nf; ++f) {
-    F fd = add_face(g);
-    const std::uint32_t first = s.offsets[f], last = s.offsets[f + 1] - 1;
-    for (std::uint32_t c = first; c <= last; ++c) {
-      set_face(hc[c], fd, g);
-      set_next(hc[c], hc[c == last ? first : c + 1], g);
-      std::uint32_t to = s.indices[c == last ? first : c + 1];
-      if (!vertex_set[to]) {
-        vertex_set[to] = 1;
-        set_halfedge(vs[to], hc[c], g);
-      }
-    }
-    set_halfedge(fd, hc[last], g); // targets the first corner
-  }
-
-  // Border cycles; a border vertex's halfedge becomes its incoming border halfedge.
-  for (std::uint32_t c = 0; c < nc; ++c)
-    if (twin[c] == k_null) {
-      H b = opposite(hc[c], g); // from c's next corner to c's vertex v
-      std::uint32_t v = s.indices[c];
-      set_next(b, opposite(hc[border_out[v]], g), g);
-      set_halfedge(vs[v], b, g);
-      ++report.border_halfedges;
-    }
+  report.border_halfedges = link_soup(s, twin, border_out, ne, g);
 
   report.vertices = np;
   report.edges = ne;

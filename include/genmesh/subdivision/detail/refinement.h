@@ -239,9 +239,6 @@ inline std::vector<std::uint32_t> pair_corners(const Polygon_soup& s) {
 template <class G>
 void build_refined(const Polygon_soup& s, G& g, std::vector<std::uint32_t> known_twin = {},
                    std::vector<std::uint32_t>* corner_edge = nullptr) {
-  using H = halfedge_descriptor_t<G>;
-  using V = vertex_descriptor_t<G>;
-  using Traits = boost::graph_traits<G>;
   const std::size_t np = s.num_points(), nf = s.num_faces(), nc = s.indices.size();
   std::vector<std::uint32_t> head(nc);
   for (std::size_t f = 0; f < nf; ++f) {
@@ -260,54 +257,7 @@ void build_refined(const Polygon_soup& s, G& g, std::vector<std::uint32_t> known
       ++ne;
     }
   }
-  reserve(g, static_cast<typename Traits::vertices_size_type>(np),
-          static_cast<typename Traits::edges_size_type>(ne), static_cast<typename Traits::faces_size_type>(nf));
-  auto points = get(vertex_point, g);
-  std::vector<V> vs(np);
-  for (std::size_t i = 0; i < np; ++i) {
-    vs[i] = add_vertex(g);
-    put(points, vs[i], from_eigen<point_t<G>>(s.points[i]));
-  }
-  std::vector<H> hc(nc, Traits::null_halfedge());
-  if (corner_edge) corner_edge->assign(nc, k_none);
-  std::uint32_t edge_number = 0;
-  for (std::size_t c = 0; c < nc; ++c) {
-    if (hc[c] != Traits::null_halfedge()) continue;
-    H h = halfedge(add_edge(g), g);
-    H o = opposite(h, g);
-    set_target(h, vs[head[c]], g);
-    set_target(o, vs[s.indices[c]], g);
-    hc[c] = h;
-    if (twin[c] != k_none) hc[twin[c]] = o;
-    else set_face(o, Traits::null_face(), g);
-    if (corner_edge) {
-      (*corner_edge)[c] = edge_number;
-      if (twin[c] != k_none) (*corner_edge)[twin[c]] = edge_number;
-    }
-    ++edge_number;
-  }
-  std::vector<char> vertex_set(np, 0);
-  for (std::size_t f = 0; f < nf; ++f) {
-    auto fd = add_face(g);
-    const std::uint32_t first = s.offsets[f], last = s.offsets[f + 1] - 1;
-    for (std::uint32_t c = first; c <= last; ++c) {
-      set_face(hc[c], fd, g);
-      set_next(hc[c], hc[c == last ? first : c + 1], g);
-      const std::uint32_t to = head[c];
-      if (!vertex_set[to]) {
-        vertex_set[to] = 1;
-        set_halfedge(vs[to], hc[c], g);
-      }
-    }
-    set_halfedge(fd, hc[last], g);
-  }
-  for (std::size_t c = 0; c < nc; ++c)
-    if (twin[c] == k_none) {
-      H b = opposite(hc[c], g);
-      const std::uint32_t v = s.indices[c];
-      set_next(b, opposite(hc[border_out[v]], g), g);
-      set_halfedge(vs[v], b, g);
-    }
+  genmesh::detail::link_soup(s, twin, border_out, ne, g, corner_edge);
 }
 
 /// The snapshot of the mesh build_refined(soup, g, twin) would make, taken
