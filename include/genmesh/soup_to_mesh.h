@@ -36,6 +36,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
@@ -73,6 +74,22 @@ inline std::string refusal(const Soup_report& r) {
          "it):\n" + to_string(r);
 }
 
+/// A backend that cannot be built with the MutableFaceGraph primitives (the
+/// incidence mesh stores no next/prev), or that has a faster bulk builder,
+/// provides genmesh_native_link_soup(s, twin, border_out, ne, g, corner_edge),
+/// found by argument-dependent lookup, with link_soup()'s contract below
+/// (same vertex, edge, face order; same edge directions; same corner_edge).
+template <class G>
+concept Has_native_link_soup =
+    requires(const Polygon_soup& s, const std::vector<std::uint32_t>& v, std::size_t n, G& g,
+             std::vector<std::uint32_t>* ce) {
+      { genmesh_native_link_soup(s, v, v, n, g, ce) } -> std::convertible_to<std::size_t>;
+    };
+
+/// What build_mesh() and the subdivision schemes can build into.
+template <class G>
+concept Soup_buildable = (MutableFaceGraph<G> || Has_native_link_soup<G>) && HasVertexPoints<G>;
+
 /// Builds the empty g from soup s whose corners are already paired — the
 /// linking half of build_mesh(), shared with the subdivision schemes, which
 /// pair corners from their refinement pattern. twin[c] is the corner running
@@ -85,10 +102,13 @@ inline std::string refusal(const Soup_report& r) {
 /// order. Never throws but for allocation. Returns the number of border
 /// halfedges.
 template <class G>
-  requires MutableFaceGraph<G> && HasVertexPoints<G>
+  requires Soup_buildable<G>
 std::size_t link_soup(const Polygon_soup& s, const std::vector<std::uint32_t>& twin,
                       const std::vector<std::uint32_t>& border_out, std::size_t ne, G& g,
                       std::vector<std::uint32_t>* corner_edge = nullptr) {
+  if constexpr (Has_native_link_soup<G>) {
+    return genmesh_native_link_soup(s, twin, border_out, ne, g, corner_edge);
+  } else {
   using H = halfedge_descriptor_t<G>;
   using V = vertex_descriptor_t<G>;
   using Traits = boost::graph_traits<G>;
@@ -154,6 +174,7 @@ std::size_t link_soup(const Polygon_soup& s, const std::vector<std::uint32_t>& t
       ++border_halfedges;
     }
   return border_halfedges;
+  }
 }
 
 } // namespace detail
@@ -163,7 +184,7 @@ std::size_t link_soup(const Polygon_soup& s, const std::vector<std::uint32_t>& t
 /// soup fails check_soup() and repair is off (what() lists the problems), or
 /// when the repair could not fix everything (a Möbius strip, a NaN point).
 template <class G>
-  requires MutableFaceGraph<G> && HasVertexPoints<G>
+  requires detail::Soup_buildable<G>
 Build_report build_mesh(const Polygon_soup& soup, G& g, const Build_options& options = {}) {
   using namespace detail;
 

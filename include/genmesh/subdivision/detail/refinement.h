@@ -551,7 +551,7 @@ inline Eigen::Vector3d border_limit_point(const Snapshot& s, std::uint32_t v, Bo
 inline std::uint32_t no_half(const Snapshot&, std::uint32_t, int) { return 0; }
 
 template <class G>
-concept Subdividable = MutableFaceGraph<G> && FaceListGraph<G> && VertexListGraph<G> && EdgeListGraph<G> &&
+concept Subdividable = genmesh::detail::Soup_buildable<G> && FaceListGraph<G> && VertexListGraph<G> && EdgeListGraph<G> &&
                        HasVertexPoints<G> && HasIndexMap<G, vertex_index_t> && HasIndexMap<G, halfedge_index_t> &&
                        std::default_initializable<G> && std::movable<G>;
 
