@@ -1046,4 +1046,54 @@ TEST(Memory, NotMoreThanSurfaceMeshPerTriangle) {
   EXPECT_LE(grown.memory_bytes(), 2 * ours);
 }
 
+// Every link of every halfedge and the vertex and face halfedges, as numbers.
+std::vector<std::uint32_t> all_links(const Mesh& m) {
+  std::vector<std::uint32_t> s;
+  for (std::uint32_t i = 0; i < m.halfedges_size(); ++i) {
+    const genmesh::Halfedge_index h(i);
+    for (const std::uint32_t x : {m.next(h).idx(), m.prev(h).idx(), m.target(h).idx(), m.face(h).idx()})
+      s.push_back(x);
+  }
+  for (std::uint32_t i = 0; i < m.vertices_size(); ++i) s.push_back(m.halfedge(genmesh::Vertex_index(i)).idx());
+  for (std::uint32_t i = 0; i < m.faces_size(); ++i) s.push_back(m.halfedge(genmesh::Face_index(i)).idx());
+  return s;
+}
+
+// The halfedge links share one block (next | target | prev and face): growth,
+// copies, moves, reserve and shrink_to_fit keep every link.
+TEST(Memory, HalfedgeLinksSurviveGrowthCopyMoveAndShrink) {
+  Mesh m;
+  std::vector<Eigen::Vector3d> pts;
+  std::vector<std::vector<int>> quads;
+  const int n = 12;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) pts.emplace_back(i, j, 0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      quads.push_back({j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i});
+  build(m, pts, quads); // grows from empty, through many doublings
+  expect_valid(m);
+  const auto links = all_links(m);
+  const Mesh copy = m;
+  EXPECT_EQ(all_links(copy), links);
+  m.reserve(4 * m.n_vertices(), 4 * m.n_edges(), 4 * m.n_faces());
+  EXPECT_EQ(all_links(m), links);
+  const std::size_t reserved = m.memory_bytes();
+  m.shrink_to_fit();
+  EXPECT_EQ(all_links(m), links);
+  EXPECT_LT(m.memory_bytes(), reserved);
+  EXPECT_EQ(m.memory_bytes(), copy.memory_bytes()); // copies are exact-size
+  Mesh moved = std::move(m);
+  EXPECT_EQ(all_links(moved), links);
+  EXPECT_EQ(m.n_halfedges(), 0u); // NOLINT: the moved-from mesh is empty and usable
+  m = moved;
+  EXPECT_EQ(all_links(m), links);
+  // New edges get null links.
+  const genmesh::Halfedge_index h = m.add_edge();
+  EXPECT_FALSE(m.next(h).is_valid());
+  EXPECT_FALSE(m.prev(m.opposite(h)).is_valid());
+  EXPECT_FALSE(m.target(h).is_valid());
+  EXPECT_FALSE(m.face(m.opposite(h)).is_valid());
+}
+
 } // namespace

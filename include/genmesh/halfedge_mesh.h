@@ -3,16 +3,19 @@
 // What it is: an index-based halfedge data structure stored as a structure of
 // arrays with 32-bit indices. The two halfedges of edge e are 2e and 2e+1, so
 // opposite(h) = h^1 and edge(h).idx() = h/2 are arithmetic. Per halfedge it stores
-// next, prev, target vertex and face; per vertex one halfedge *targeting* it
+// next, prev, target vertex and face (next and target in arrays of their own,
+// which walks read; prev and face paired, which edits read and write
+// together; the three in one allocation); per vertex one halfedge *targeting* it
 // (null if isolated); per face one of its halfedges; one removed bit per vertex,
 // edge and face. Positions and any user data are typed dynamic properties
 // (positions are the vertex property "v:point").
 //
 // Guarantees:
-// - The memory layout is, array for array, CGAL::Surface_mesh's (same 4-byte
-//   indices, same removed bits, same std::vector growth), so bytes per
-//   element never exceed Surface_mesh's on the same mesh (about 66 bytes per
-//   triangle with double points); memory_bytes() reports the total.
+// - Memory is CGAL::Surface_mesh's, byte for byte: the same 4-byte indices
+//   (16 bytes per halfedge, 4 per vertex and face), the same removed bits,
+//   the same doubling growth, so bytes per element never exceed
+//   Surface_mesh's on the same mesh (about 66 bytes per triangle with
+//   double points); memory_bytes() reports the total.
 // - Index allocation is CGAL::Surface_mesh's exactly: remove_* only marks and
 //   pushes onto a LIFO free list (threaded through the removed element's own
 //   halfedge/next slot), add_* reuses the most recently freed index when
@@ -57,9 +60,11 @@
 #include <compare>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -246,6 +251,9 @@ private:
 };
 
 class Halfedge_connectivity;
+namespace detail {
+struct Halfedge_mesh_bulk;
+}
 
 namespace detail {
 
@@ -391,6 +399,139 @@ struct Step_target_face {
   static Face_index value(const M& m, Halfedge_index h) { return m.face(h); }
 };
 
+/// next, prev, target and face of every halfedge, in one allocation of 16
+/// bytes per halfedge: next and target each in an array of their own (walks
+/// around a vertex or a face read only those: 16 halfedges per cache line),
+/// prev and face together in an 8-byte record (an edit reads and writes them
+/// together: a split touches five cache lines of old halfedges instead of
+/// six). All grown together: one capacity check and, when full, one
+/// reallocation per added edge. The allocation has the size of
+/// Surface_mesh's 16-byte halfedge records, so the allocator treats both
+/// meshes alike (four separate 4-byte arrays fell below glibc's adaptive
+/// mmap threshold differently and paid a page fault per 4 KiB on every
+/// regrowth: 650k faults where Surface_mesh had 3k). Capacity doubles as
+/// std::vector's does. Copies are exact-size.
+class Halfedge_links {
+public:
+  Halfedge_links() = default;
+  Halfedge_links(const Halfedge_links& o) { copy_from(o, o.size_); }
+  Halfedge_links(Halfedge_links&& o) noexcept { steal(o); }
+  Halfedge_links& operator=(const Halfedge_links& o) {
+    if (this != &o) {
+      Halfedge_links t(o);
+      *this = std::move(t);
+    }
+    return *this;
+  }
+  Halfedge_links& operator=(Halfedge_links&& o) noexcept {
+    if (this != &o) steal(o);
+    return *this;
+  }
+  ~Halfedge_links() = default;
+
+  [[nodiscard]] std::size_t size() const { return size_; }
+  [[nodiscard]] std::size_t capacity() const { return cap_; }
+
+  // Element access (i < size()).
+  Halfedge_index& next(std::size_t i) { return next_[i]; }
+  Halfedge_index& prev(std::size_t i) { return rec_[i].prev; }
+  Vertex_index& target(std::size_t i) { return target_[i]; }
+  Face_index& face(std::size_t i) { return rec_[i].face; }
+  [[nodiscard]] Halfedge_index next(std::size_t i) const { return next_[i]; }
+  [[nodiscard]] Halfedge_index prev(std::size_t i) const { return rec_[i].prev; }
+  [[nodiscard]] Vertex_index target(std::size_t i) const { return target_[i]; }
+  [[nodiscard]] Face_index face(std::size_t i) const { return rec_[i].face; }
+
+  /// Appends two halfedges with null links; returns the index of the first.
+  std::size_t push_back_pair() {
+    if (size_ + 2 > cap_) grow(size_ + std::max<std::size_t>(size_, 2));
+    const std::size_t i = size_;
+    next_[i] = next_[i + 1] = Halfedge_index();
+    target_[i] = target_[i + 1] = Vertex_index();
+    rec_[i] = rec_[i + 1] = Record();
+    size_ += 2;
+    return i;
+  }
+  /// New elements get null links.
+  void resize(std::size_t n) {
+    if (n > cap_) grow(n);
+    for (std::size_t k = size_; k < n; ++k) {
+      next_[k] = Halfedge_index();
+      target_[k] = Vertex_index();
+      rec_[k] = Record();
+    }
+    size_ = n;
+  }
+  void reserve(std::size_t n) {
+    if (n > cap_) grow(n);
+  }
+  void shrink_to_fit() {
+    if (cap_ != size_) {
+      Halfedge_links t;
+      t.copy_from(*this, size_);
+      *this = std::move(t);
+    }
+  }
+
+private:
+  struct Record {
+    Halfedge_index prev;
+    Face_index face;
+  };
+  static_assert(sizeof(Record) == 8 && std::is_trivially_copyable_v<Record> &&
+                std::is_trivially_copyable_v<Halfedge_index> && std::is_trivially_copyable_v<Vertex_index>);
+  static constexpr std::size_t bytes_per_halfedge = sizeof(Halfedge_index) + sizeof(Vertex_index) + sizeof(Record);
+
+  // Reallocates to capacity n >= size_, keeping the elements.
+  void grow(std::size_t n) {
+    Halfedge_links t;
+    t.copy_from(*this, n);
+    *this = std::move(t);
+  }
+  // Becomes a copy of o's elements with capacity cap >= o.size_. memcpy:
+  // element-wise copies (what std::uninitialized_copy makes of these
+  // non-trivial-default types) took 8 % of a split pass.
+  void copy_from(const Halfedge_links& o, std::size_t cap) {
+    allocate(cap);
+    size_ = o.size_;
+    if (size_ == 0) return;
+    std::memcpy(next_, o.next_, size_ * sizeof(Halfedge_index));
+    std::memcpy(target_, o.target_, size_ * sizeof(Vertex_index));
+    std::memcpy(rec_, o.rec_, size_ * sizeof(Record));
+  }
+  void allocate(std::size_t cap) {
+    cap_ = cap;
+    size_ = 0;
+    if (cap == 0) {
+      buf_.reset();
+      next_ = nullptr;
+      target_ = nullptr;
+      rec_ = nullptr;
+      return;
+    }
+    // new std::byte[] is suitably aligned and provides storage for the
+    // (implicit-lifetime, trivially copyable) index objects.
+    buf_.reset(new std::byte[bytes_per_halfedge * cap]);
+    next_ = reinterpret_cast<Halfedge_index*>(buf_.get());
+    target_ = reinterpret_cast<Vertex_index*>(buf_.get() + sizeof(Halfedge_index) * cap);
+    rec_ = reinterpret_cast<Record*>(buf_.get() + (sizeof(Halfedge_index) + sizeof(Vertex_index)) * cap);
+  }
+  void steal(Halfedge_links& o) {
+    buf_ = std::move(o.buf_);
+    next_ = std::exchange(o.next_, nullptr);
+    target_ = std::exchange(o.target_, nullptr);
+    rec_ = std::exchange(o.rec_, nullptr);
+    size_ = std::exchange(o.size_, 0);
+    cap_ = std::exchange(o.cap_, 0);
+  }
+
+  std::unique_ptr<std::byte[]> buf_;
+  Halfedge_index* next_ = nullptr;
+  Vertex_index* target_ = nullptr;
+  Record* rec_ = nullptr;
+  std::size_t size_ = 0, cap_ = 0;
+};
+
 template <class P>
 P default_point() {
   if constexpr (Point3<P>)
@@ -455,8 +596,8 @@ public:
 
   /// Index bounds: live plus removed, not yet collected, elements.
   [[nodiscard]] size_type vertices_size() const { return vhalfedge_.size(); }
-  [[nodiscard]] size_type halfedges_size() const { return hnext_.size(); }
-  [[nodiscard]] size_type edges_size() const { return hnext_.size() / 2; }
+  [[nodiscard]] size_type halfedges_size() const { return hlinks_.size(); }
+  [[nodiscard]] size_type edges_size() const { return hlinks_.size() / 2; }
   [[nodiscard]] size_type faces_size() const { return fhalfedge_.size(); }
 
   [[nodiscard]] size_type number_of_removed_vertices() const { return removed_vertices_; }
@@ -485,11 +626,11 @@ public:
 
   // ---- connectivity -------------------------------------------------------
 
-  [[nodiscard]] Halfedge_index next(Halfedge_index h) const { return hnext_[h.idx()]; }
-  [[nodiscard]] Halfedge_index prev(Halfedge_index h) const { return hprev_[h.idx()]; }
-  [[nodiscard]] Vertex_index target(Halfedge_index h) const { return htarget_[h.idx()]; }
-  [[nodiscard]] Vertex_index source(Halfedge_index h) const { return htarget_[h.idx() ^ 1u]; }
-  [[nodiscard]] Face_index face(Halfedge_index h) const { return hface_[h.idx()]; }
+  [[nodiscard]] Halfedge_index next(Halfedge_index h) const { return hlinks_.next(h.idx()); }
+  [[nodiscard]] Halfedge_index prev(Halfedge_index h) const { return hlinks_.prev(h.idx()); }
+  [[nodiscard]] Vertex_index target(Halfedge_index h) const { return hlinks_.target(h.idx()); }
+  [[nodiscard]] Vertex_index source(Halfedge_index h) const { return hlinks_.target(h.idx() ^ 1u); }
+  [[nodiscard]] Face_index face(Halfedge_index h) const { return hlinks_.face(h.idx()); }
   [[nodiscard]] static constexpr Halfedge_index opposite(Halfedge_index h) {
     return Halfedge_index(h.idx() ^ 1u);
   }
@@ -530,15 +671,15 @@ public:
 
   /// next(h) = nh and, if nh is not null, prev(nh) = h (as Surface_mesh).
   void set_next(Halfedge_index h, Halfedge_index nh) {
-    hnext_[h.idx()] = nh;
-    if (nh.is_valid()) hprev_[nh.idx()] = h;
+    hlinks_.next(h.idx()) = nh;
+    if (nh.is_valid()) hlinks_.prev(nh.idx()) = h;
   }
-  void set_next_only(Halfedge_index h, Halfedge_index nh) { hnext_[h.idx()] = nh; }
+  void set_next_only(Halfedge_index h, Halfedge_index nh) { hlinks_.next(h.idx()) = nh; }
   void set_prev_only(Halfedge_index h, Halfedge_index ph) {
-    if (h.is_valid()) hprev_[h.idx()] = ph;
+    if (h.is_valid()) hlinks_.prev(h.idx()) = ph;
   }
-  void set_target(Halfedge_index h, Vertex_index v) { htarget_[h.idx()] = v; }
-  void set_face(Halfedge_index h, Face_index f) { hface_[h.idx()] = f; }
+  void set_target(Halfedge_index h, Vertex_index v) { hlinks_.target(h.idx()) = v; }
+  void set_face(Halfedge_index h, Face_index f) { hlinks_.face(h.idx()) = f; }
   void set_halfedge(Vertex_index v, Halfedge_index h) { vhalfedge_[v.idx()] = h; }
   void set_halfedge(Face_index f, Halfedge_index h) { fhalfedge_[f.idx()] = h; }
 
@@ -595,15 +736,8 @@ public:
 
   /// A new isolated vertex (recycled if possible); its properties have their defaults.
   Vertex_index add_vertex() {
-    if (recycle_ && vertices_freelist_ != invalid) {
-      const std::uint32_t i = vertices_freelist_;
-      vertices_freelist_ = vhalfedge_[i].idx();
-      --removed_vertices_;
-      vremoved_[i] = false;
-      vhalfedge_[i] = Halfedge_index();
-      vprops_.reset(i);
-      return Vertex_index(i);
-    }
+    if (recycle_ && vertices_freelist_ != invalid) [[unlikely]]
+      return recycle_vertex();
     check_room(vhalfedge_.size());
     vhalfedge_.push_back(Halfedge_index());
     vremoved_.push_back(false);
@@ -614,31 +748,15 @@ public:
   /// A new edge (recycled if possible) with null connectivity; returns its
   /// halfedge 0 (2e).
   Halfedge_index add_edge() {
-    if (recycle_ && edges_freelist_ != invalid) {
-      const std::uint32_t h = edges_freelist_;
-      edges_freelist_ = hnext_[h].idx();
-      --removed_edges_;
-      eremoved_[h >> 1] = false;
-      for (std::uint32_t k : {h, h ^ 1u}) {
-        hnext_[k] = hprev_[k] = Halfedge_index();
-        htarget_[k] = Vertex_index();
-        hface_[k] = Face_index();
-        hprops_.reset(k);
-      }
-      eprops_.reset(h >> 1);
-      return Halfedge_index(h);
-    }
-    check_room(hnext_.size() + 1);
-    for (int k = 0; k < 2; ++k) {
-      hnext_.emplace_back();
-      hprev_.emplace_back();
-      htarget_.emplace_back();
-      hface_.emplace_back();
-      hprops_.push_back();
-    }
+    if (recycle_ && edges_freelist_ != invalid) [[unlikely]]
+      return recycle_edge();
+    check_room(hlinks_.size() + 1);
+    const auto h = static_cast<std::uint32_t>(hlinks_.push_back_pair());
+    hprops_.push_back();
+    hprops_.push_back();
     eremoved_.push_back(false);
     eprops_.push_back();
-    return Halfedge_index(static_cast<std::uint32_t>(hnext_.size() - 2));
+    return Halfedge_index(h);
   }
 
   /// A new edge from v0 to v1: returns the halfedge targeting v1 (its opposite
@@ -652,15 +770,8 @@ public:
 
   /// A new face (recycled if possible) with no halfedge.
   Face_index add_face() {
-    if (recycle_ && faces_freelist_ != invalid) {
-      const std::uint32_t i = faces_freelist_;
-      faces_freelist_ = fhalfedge_[i].idx();
-      --removed_faces_;
-      fremoved_[i] = false;
-      fhalfedge_[i] = Halfedge_index();
-      fprops_.reset(i);
-      return Face_index(i);
-    }
+    if (recycle_ && faces_freelist_ != invalid) [[unlikely]]
+      return recycle_face();
     check_room(fhalfedge_.size());
     fhalfedge_.push_back(Halfedge_index());
     fremoved_.push_back(false);
@@ -684,7 +795,7 @@ public:
     eremoved_[e.idx()] = true;
     ++removed_edges_;
     garbage_ = true;
-    hnext_[e.idx() << 1] = Halfedge_index(edges_freelist_);
+    hlinks_.next(e.idx() << 1) = Halfedge_index(edges_freelist_);
     edges_freelist_ = e.idx() << 1;
   }
   /// Marks f removed and frees its index; adjusts nothing else.
@@ -745,19 +856,16 @@ public:
       for (std::uint32_t i = 0; i < 2 * ne; ++i) {
         if (hmap[i] == invalid) continue;
         const std::uint32_t j = hmap[i];
-        hnext_[j] = map_h(hnext_[i]);
-        hprev_[j] = map_h(hprev_[i]);
-        htarget_[j] = map_v(htarget_[i]);
-        hface_[j] = map_f(hface_[i]);
+        hlinks_.next(j) = map_h(hlinks_.next(i));
+        hlinks_.prev(j) = map_h(hlinks_.prev(i));
+        hlinks_.target(j) = map_v(hlinks_.target(i));
+        hlinks_.face(j) = map_f(hlinks_.face(i));
       }
       for (std::uint32_t i = 0; i < nf; ++i)
         if (fmap[i] != invalid) fhalfedge_[fmap[i]] = map_h(fhalfedge_[i]);
 
       vhalfedge_.resize(kv);
-      hnext_.resize(2 * std::size_t(ke));
-      hprev_.resize(2 * std::size_t(ke));
-      htarget_.resize(2 * std::size_t(ke));
-      hface_.resize(2 * std::size_t(ke));
+      hlinks_.resize(2 * std::size_t(ke));
       fhalfedge_.resize(kf);
       vremoved_.assign(kv, false);
       eremoved_.assign(ke, false);
@@ -791,9 +899,7 @@ public:
     vhalfedge_.reserve(nv);
     vremoved_.reserve(nv);
     vprops_.reserve(nv);
-    for (auto* a : {&hnext_, &hprev_}) a->reserve(2 * ne);
-    htarget_.reserve(2 * ne);
-    hface_.reserve(2 * ne);
+    hlinks_.reserve(2 * ne);
     hprops_.reserve(2 * ne);
     eremoved_.reserve(ne);
     eprops_.reserve(ne);
@@ -805,10 +911,7 @@ public:
   /// Releases unused capacity of every array.
   void shrink_to_fit() {
     vhalfedge_.shrink_to_fit();
-    hnext_.shrink_to_fit();
-    hprev_.shrink_to_fit();
-    htarget_.shrink_to_fit();
-    hface_.shrink_to_fit();
+    hlinks_.shrink_to_fit();
     fhalfedge_.shrink_to_fit();
     vremoved_.shrink_to_fit();
     eremoved_.shrink_to_fit();
@@ -823,9 +926,8 @@ public:
   /// property including the points); excludes the fixed-size object itself.
   [[nodiscard]] size_type memory_bytes() const {
     auto bits = [](const std::vector<bool>& b) { return (b.capacity() + 7) / 8; };
-    return sizeof(Halfedge_index) *
-               (vhalfedge_.capacity() + hnext_.capacity() + hprev_.capacity() + fhalfedge_.capacity()) +
-           sizeof(Vertex_index) * htarget_.capacity() + sizeof(Face_index) * hface_.capacity() +
+    return sizeof(Halfedge_index) * (vhalfedge_.capacity() + 2 * hlinks_.capacity() + fhalfedge_.capacity()) +
+           (sizeof(Vertex_index) + sizeof(Face_index)) * hlinks_.capacity() +
            bits(vremoved_) + bits(eremoved_) + bits(fremoved_) + vprops_.memory_bytes() +
            hprops_.memory_bytes() + eprops_.memory_bytes() + fprops_.memory_bytes();
   }
@@ -1066,14 +1168,51 @@ protected:
     return map;
   }
 
+  friend struct detail::Halfedge_mesh_bulk; // bulk growth (detail/halfedge_mesh_bulk.h)
+
   static void check_room(std::size_t size) {
     // Two indices per edge must stay below the null value.
-    if (size + 2 >= std::size_t(invalid)) throw invalid_input("Halfedge_mesh: more than 2^32-2 elements");
+    if (size + 2 >= std::size_t(invalid)) [[unlikely]]
+      too_many();
+  }
+  [[noreturn]] static void too_many() { throw invalid_input("Halfedge_mesh: more than 2^32-2 elements"); }
+
+  // The recycling halves of add_vertex/add_edge/add_face, kept out of the
+  // appending path so that it stays small enough to inline.
+  Vertex_index recycle_vertex() {
+    const std::uint32_t i = vertices_freelist_;
+    vertices_freelist_ = vhalfedge_[i].idx();
+    --removed_vertices_;
+    vremoved_[i] = false;
+    vhalfedge_[i] = Halfedge_index();
+    vprops_.reset(i);
+    return Vertex_index(i);
+  }
+  Halfedge_index recycle_edge() {
+    const std::uint32_t h = edges_freelist_;
+    edges_freelist_ = hlinks_.next(h).idx();
+    --removed_edges_;
+    eremoved_[h >> 1] = false;
+    for (std::uint32_t k : {h, h ^ 1u}) {
+      hlinks_.next(k) = hlinks_.prev(k) = Halfedge_index();
+      hlinks_.target(k) = Vertex_index();
+      hlinks_.face(k) = Face_index();
+      hprops_.reset(k);
+    }
+    eprops_.reset(h >> 1);
+    return Halfedge_index(h);
+  }
+  Face_index recycle_face() {
+    const std::uint32_t i = faces_freelist_;
+    faces_freelist_ = fhalfedge_[i].idx();
+    --removed_faces_;
+    fremoved_[i] = false;
+    fhalfedge_[i] = Halfedge_index();
+    fprops_.reset(i);
+    return Face_index(i);
   }
 
-  std::vector<Halfedge_index> hnext_, hprev_;
-  std::vector<Vertex_index> htarget_;
-  std::vector<Face_index> hface_;
+  detail::Halfedge_links hlinks_;
   std::vector<Halfedge_index> vhalfedge_;
   std::vector<Halfedge_index> fhalfedge_;
   std::vector<bool> vremoved_, eremoved_, fremoved_;
@@ -1517,3 +1656,5 @@ static_assert(HasVertexPoints<Halfedge_mesh<>> && HasIndexMap<Halfedge_mesh<>, v
               HasIndexMap<Halfedge_mesh<>, face_index_t>);
 
 } // namespace genmesh
+
+#include <genmesh/detail/halfedge_mesh_bulk.h>
