@@ -23,7 +23,7 @@ namespace genmesh {
 /// No-op hooks for every local operation. Each hook is a template so that a
 /// derived visitor may hide just the ones it needs.
 struct Mutation_visitor {
-  /// After flip_edge(h): h is the flipped edge's halfedge (see flip_edge).
+  /// After flip_edge(h) and unflip_edge(h): h is the turned edge's halfedge.
   void on_flip(const auto& /*h*/, const auto& /*g*/) {}
   /// After split_edge(h) and split_edge_and_triangulate(h): hnew is the
   /// returned halfedge, target(hnew) the new vertex, next(hnew) == h.
@@ -44,6 +44,9 @@ struct Mutation_visitor {
   void before_remove_center_vertex(const auto& /*h*/, const auto& /*g*/) {}
   /// After bevel_vertex: f is the new face where the vertex was.
   void on_bevel_vertex(const auto& /*f*/, const auto& /*g*/) {}
+  /// After bevel_edge(h): face(hq) is the new face where the edge was (hq ==
+  /// opposite(h), see bevel_edge).
+  void on_bevel_edge(const auto& /*hq*/, const auto& /*g*/) {}
   /// After bevel_face: f is the inset face.
   void on_bevel_face(const auto& /*f*/, const auto& /*g*/) {}
   /// After add_face: f is the new face.
