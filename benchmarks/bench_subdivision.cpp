@@ -1,21 +1,35 @@
-// Subdivision side by side on armadillo.off (libcgal-demo, 52k triangles):
-// Loop × 3 and Catmull-Clark × 2 with genmesh on Halfedge_mesh, genmesh on
-// CGAL::Surface_mesh, and CGAL::Subdivision_method_3 on Surface_mesh.
+// Subdivision side by side: genmesh on Halfedge_mesh, genmesh on
+// CGAL::Surface_mesh, CGAL::Subdivision_method_3 on Surface_mesh and
+// OpenMesh's uniform subdividers (LoopT, CatmullClarkT, Sqrt3T,
+// ModifiedButterflyT), on armadillo.off (libcgal-demo, 52k triangles: Loop × 3,
+// Catmull-Clark × 2, √3 × 3, butterfly × 3) and on a 1.3M-triangle icosphere
+// (make_icosphere(8); Loop × 1, Catmull-Clark × 1).
 //
 //   genmesh_benchmarks --benchmark_filter=Subdivision --benchmark_repetitions=5
 //                      --benchmark_report_aggregates_only=true
 //
 // The input is read from $GENMESH_DATA_DIR/meshes (default: the build's data folder).
-// peak_MB is the heap peak above the input copy while subdividing.
-// Each iteration subdivides a fresh copy of the input (the copy is not timed).
+// peak_MB is the heap peak above what was live before the call (the input
+// copy, which the call may free or grow, is counted in "before").
+// Each iteration subdivides a fresh copy of the input (the copy is not timed,
+// nor is the destruction of the result).
 #include <genmesh/adaptors/cgal.h>
+#include <genmesh/generators.h>
 #include <genmesh/halfedge_mesh.h>
 #include <genmesh/io.h>
+#include <genmesh/soup_to_mesh.h>
 #include <genmesh/subdivision.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 
 #include <benchmark/benchmark.h>
 
@@ -24,53 +38,79 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace {
 
 using Surface_mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 using Halfedge_mesh = genmesh::Halfedge_mesh<>;
+struct Om_traits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+using Om_tri = OpenMesh::TriMesh_ArrayKernelT<Om_traits>;
+using Om_poly = OpenMesh::PolyMesh_ArrayKernelT<Om_traits>;
 
-std::string armadillo() {
-  // GENMESH_DATA_DIR in the environment, else the build's data folder
-  const char* dir = std::getenv("GENMESH_DATA_DIR");
-  return (std::filesystem::path(dir ? dir : GENMESH_DATA_DIR) / "meshes" / "armadillo.off").string();
+enum class Input { armadillo, sphere };
+
+const genmesh::Polygon_soup& soup(Input in) {
+  static const genmesh::Polygon_soup armadillo = [] {
+    const char* dir = std::getenv("GENMESH_DATA_DIR");
+    return genmesh::read_soup(std::filesystem::path(dir ? dir : GENMESH_DATA_DIR) / "meshes" / "armadillo.off");
+  }();
+  if (in == Input::armadillo) return armadillo;
+  static const genmesh::Polygon_soup sphere = genmesh::make_icosphere(8);
+  return sphere;
 }
 
 template <class G>
-const G& input() {
-  static const G g = [] {
-    G m;
-    genmesh::read_mesh(armadillo(), m);
-    return m;
-  }();
+G make(Input in) {
+  G g;
+  if constexpr (std::is_same_v<G, Om_tri> || std::is_same_v<G, Om_poly>) {
+    const auto& s = soup(in);
+    std::vector<typename G::VertexHandle> vh;
+    vh.reserve(s.num_points());
+    for (const auto& p : s.points) vh.push_back(g.add_vertex(typename G::Point(p.x(), p.y(), p.z())));
+    std::vector<typename G::VertexHandle> f;
+    for (std::size_t i = 0; i < s.num_faces(); ++i) {
+      f.clear();
+      for (auto c : s.face(i)) f.push_back(vh[c]);
+      g.add_face(f);
+    }
+  } else {
+    genmesh::build_mesh(soup(in), g, {.check = false});
+  }
   return g;
 }
 
-enum class Scheme { loop, catmull_clark };
-enum class Impl { genmesh, cgal };
+template <class G>
+const G& input(Input in) {
+  static const G armadillo = make<G>(Input::armadillo);
+  if (in == Input::armadillo) return armadillo;
+  static const G sphere = make<G>(Input::sphere);
+  return sphere;
+}
 
-template <class G, Scheme S, Impl I>
-void BM_Subdivision(benchmark::State& state) {
-  const int levels = S == Scheme::loop ? 3 : 2;
+template <class G>
+std::size_t face_count(const G& g) {
+  if constexpr (std::is_same_v<G, Om_tri> || std::is_same_v<G, Om_poly>) return g.n_faces();
+  else return static_cast<std::size_t>(num_faces(g));
+}
+
+template <class G, class Run>
+void run_case(benchmark::State& state, Input in, Run run) {
   std::size_t faces = 0;
   long long peak = 0;
   for (auto _ : state) {
     state.PauseTiming();
-    G g = input<G>();
+    G g = input<G>(in);
     const long long before = genmesh_bench::live_bytes();
     genmesh_bench::reset_peak();
     state.ResumeTiming();
-    if constexpr (I == Impl::genmesh) {
-      if constexpr (S == Scheme::loop) genmesh::loop_subdivision(g, {.iterations = levels});
-      else genmesh::catmull_clark_subdivision(g, {.iterations = levels});
-    } else {
-      const auto np = CGAL::parameters::number_of_iterations(levels);
-      if constexpr (S == Scheme::loop) CGAL::Subdivision_method_3::Loop_subdivision(g, np);
-      else CGAL::Subdivision_method_3::CatmullClark_subdivision(g, np);
-    }
+    run(g);
     benchmark::DoNotOptimize(g);
     peak = genmesh_bench::peak_bytes() - before;
-    faces = static_cast<std::size_t>(num_faces(g));
+    faces = face_count(g);
     state.PauseTiming();
     { G discard = std::move(g); } // destruction not timed
     state.ResumeTiming();
@@ -79,17 +119,80 @@ void BM_Subdivision(benchmark::State& state) {
   state.counters["peak_MB"] = static_cast<double>(peak) / 1e6;
 }
 
-BENCHMARK(BM_Subdivision<Halfedge_mesh, Scheme::loop, Impl::genmesh>)
-    ->Name("Subdivision/Loop3/genmesh_Halfedge_mesh")->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Subdivision<Surface_mesh, Scheme::loop, Impl::genmesh>)
-    ->Name("Subdivision/Loop3/genmesh_Surface_mesh")->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Subdivision<Surface_mesh, Scheme::loop, Impl::cgal>)
-    ->Name("Subdivision/Loop3/CGAL_Surface_mesh")->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Subdivision<Halfedge_mesh, Scheme::catmull_clark, Impl::genmesh>)
-    ->Name("Subdivision/CatmullClark2/genmesh_Halfedge_mesh")->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Subdivision<Surface_mesh, Scheme::catmull_clark, Impl::genmesh>)
-    ->Name("Subdivision/CatmullClark2/genmesh_Surface_mesh")->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Subdivision<Surface_mesh, Scheme::catmull_clark, Impl::cgal>)
-    ->Name("Subdivision/CatmullClark2/CGAL_Surface_mesh")->Unit(benchmark::kMillisecond);
+template <template <class, class> class Subdivider, class G>
+void openmesh(G& g, int levels) {
+  Subdivider<G, double> s;
+  s.attach(g);
+  s(static_cast<std::size_t>(levels));
+  s.detach();
+}
+
+void register_all() {
+  using namespace genmesh;
+  namespace sm3 = CGAL::Subdivision_method_3;
+  auto reg = [](const std::string& name, auto fn) {
+    benchmark::RegisterBenchmark(("Subdivision/" + name).c_str(), fn)->Unit(benchmark::kMillisecond);
+  };
+  struct Case {
+    const char* name;
+    Input in;
+    int levels;
+  };
+  for (Case c : {Case{"Loop3", Input::armadillo, 3}, Case{"Loop1_sphere1M", Input::sphere, 1}}) {
+    const std::string n = c.name;
+    const Input in = c.in;
+    const int l = c.levels;
+    reg(n + "/genmesh_Halfedge_mesh", [=](benchmark::State& s) {
+      run_case<Halfedge_mesh>(s, in, [=](auto& g) { loop_subdivision(g, {.iterations = l}); });
+    });
+    reg(n + "/genmesh_Surface_mesh", [=](benchmark::State& s) {
+      run_case<Surface_mesh>(s, in, [=](auto& g) { loop_subdivision(g, {.iterations = l}); });
+    });
+    reg(n + "/CGAL_Surface_mesh", [=](benchmark::State& s) {
+      run_case<Surface_mesh>(s, in, [=](auto& g) { sm3::Loop_subdivision(g, CGAL::parameters::number_of_iterations(l)); });
+    });
+    reg(n + "/OpenMesh_LoopT", [=](benchmark::State& s) {
+      run_case<Om_tri>(s, in, [=](auto& g) { openmesh<OpenMesh::Subdivider::Uniform::LoopT>(g, l); });
+    });
+  }
+  for (Case c : {Case{"CatmullClark2", Input::armadillo, 2}, Case{"CatmullClark1_sphere1M", Input::sphere, 1}}) {
+    const std::string n = c.name;
+    const Input in = c.in;
+    const int l = c.levels;
+    reg(n + "/genmesh_Halfedge_mesh", [=](benchmark::State& s) {
+      run_case<Halfedge_mesh>(s, in, [=](auto& g) { catmull_clark_subdivision(g, {.iterations = l}); });
+    });
+    reg(n + "/genmesh_Surface_mesh", [=](benchmark::State& s) {
+      run_case<Surface_mesh>(s, in, [=](auto& g) { catmull_clark_subdivision(g, {.iterations = l}); });
+    });
+    reg(n + "/CGAL_Surface_mesh", [=](benchmark::State& s) {
+      run_case<Surface_mesh>(s, in, [=](auto& g) {
+        sm3::CatmullClark_subdivision(g, CGAL::parameters::number_of_iterations(l));
+      });
+    });
+    reg(n + "/OpenMesh_CatmullClarkT", [=](benchmark::State& s) {
+      run_case<Om_poly>(s, in, [=](auto& g) { openmesh<OpenMesh::Subdivider::Uniform::CatmullClarkT>(g, l); });
+    });
+  }
+  reg("Sqrt3_3/genmesh_Halfedge_mesh", [](benchmark::State& s) {
+    run_case<Halfedge_mesh>(s, Input::armadillo, [](auto& g) { sqrt3_subdivision(g, {.iterations = 3}); });
+  });
+  reg("Sqrt3_3/CGAL_Surface_mesh", [](benchmark::State& s) {
+    run_case<Surface_mesh>(s, Input::armadillo,
+                           [](auto& g) { sm3::Sqrt3_subdivision(g, CGAL::parameters::number_of_iterations(3)); });
+  });
+  reg("Sqrt3_3/OpenMesh_Sqrt3T", [](benchmark::State& s) {
+    run_case<Om_tri>(s, Input::armadillo, [](auto& g) { openmesh<OpenMesh::Subdivider::Uniform::Sqrt3T>(g, 3); });
+  });
+  reg("Butterfly3/genmesh_Halfedge_mesh", [](benchmark::State& s) {
+    run_case<Halfedge_mesh>(s, Input::armadillo, [](auto& g) { butterfly_subdivision(g, {.iterations = 3}); });
+  });
+  reg("Butterfly3/OpenMesh_ModifiedButterflyT", [](benchmark::State& s) {
+    run_case<Om_tri>(s, Input::armadillo,
+                     [](auto& g) { openmesh<OpenMesh::Subdivider::Uniform::ModifiedButterflyT>(g, 3); });
+  });
+}
+
+const bool registered = (register_all(), true);
 
 } // namespace

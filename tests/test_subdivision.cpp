@@ -21,6 +21,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <span>
+#include <type_traits>
 #include <limits>
 #include <string>
 #include <vector>
@@ -29,6 +31,12 @@ namespace {
 
 using genmesh::Polygon_soup;
 using genmesh_test::Backends;
+
+// Loop and Catmull-Clark refine these in place; the incidence mesh (no
+// set_next) goes through a Halfedge_mesh copy.
+static_assert(genmesh::detail::subdivision::In_place_refinable<genmesh_test::Halfedge_mesh>);
+static_assert(genmesh::detail::subdivision::In_place_refinable<genmesh_test::Surface_mesh>);
+static_assert(!genmesh::detail::subdivision::In_place_refinable<genmesh_test::Incidence_mesh>);
 
 enum class Scheme { loop, loop_warren, catmull_clark, midpoint, sqrt3, doo_sabin, butterfly };
 constexpr Scheme all_schemes[] = {Scheme::loop,  Scheme::loop_warren, Scheme::catmull_clark, Scheme::midpoint,
@@ -769,6 +777,187 @@ TYPED_TEST(Subdivision, LimitPositionsAreInvariantUnderSubdivision) {
       moved += (unprojected.points[i] - out[0].points[i]).norm() > 1e-9;
     }
     EXPECT_GT(moved, old_vertices / 2); // the projection does move vertices
+  }
+}
+
+} // namespace
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// Attribute transport: a per-vertex scalar equal to a linear function of the
+// position, blended with the masks the visitor reports, equals that function
+// of the new positions after every level — on the border, on creases, at
+// tagged corners too (every rule is an affine combination) — and is the same
+// on every backend.
+
+double linear(const Eigen::Vector3d& p) { return 2.0 * p.x() - 3.0 * p.y() + 0.5 * p.z() + 1.0; }
+
+struct Scalar_transport {
+  std::vector<double> value, next;
+  std::size_t calls = 0;
+  double worst_weight_sum = 0;
+  genmesh::Subdivision_visitor visitor() {
+    return {
+        .on_level_begin = [this](int, std::size_t, std::size_t n) { next.assign(n, std::nan("")); },
+        .on_vertex =
+            [this](std::uint32_t v, std::span<const std::uint32_t> src, std::span<const double> w) {
+              double x = 0, sum = 0;
+              for (std::size_t i = 0; i < src.size(); ++i) x += w[i] * value.at(src[i]), sum += w[i];
+              worst_weight_sum = std::max(worst_weight_sum, std::abs(sum - 1.0));
+              next.at(v) = x;
+              ++calls;
+            },
+        .on_level_end = [this](int) { value.swap(next); },
+    };
+  }
+};
+
+TYPED_TEST(Subdivision, VisitorMasksCarryAttributesLikePositions) {
+  Polygon_soup bumpy = genmesh::make_grid_with_hole(5);
+  for (auto& p : bumpy.points) p.z() = std::sin(3 * p.x()) * std::cos(2 * p.y());
+  const std::vector<std::pair<std::string, Polygon_soup>> cases = {
+      {"icosphere", genmesh::make_icosphere(1)}, {"bumpy annulus", bumpy}, {"torus", genmesh::make_torus(8, 6, true)}};
+  for (const auto& [label, soup] : cases)
+    for (bool loop : {true, false})
+      for (bool creases : {false, true}) {
+        SCOPED_TRACE(label + (loop ? " / Loop" : " / Catmull-Clark") + (creases ? " / creases + corner" : ""));
+        auto run_on = [&](auto& g) {
+          Scalar_transport t;
+          for (const auto& p : soup.points) t.value.push_back(linear(p));
+          const auto sharp = creases ? sharpness_where(g, [](std::size_t v) { return v < 6; }, 0.5)
+                                     : std::vector<double>{};
+          const std::vector<std::uint32_t> corners = creases ? std::vector<std::uint32_t>{7} : std::vector<std::uint32_t>{};
+          if (loop)
+            genmesh::loop_subdivision(
+                g, {.iterations = 2, .crease_sharpness = sharp, .corners = corners, .visitor = t.visitor()});
+          else
+            genmesh::catmull_clark_subdivision(
+                g, {.iterations = 2, .crease_sharpness = sharp, .corners = corners, .visitor = t.visitor()});
+          return t;
+        };
+        auto g = mesh_of<TypeParam>(soup);
+        const Scalar_transport t = run_on(g);
+        const Polygon_soup out = genmesh::to_soup(g);
+        ASSERT_EQ(t.value.size(), out.num_points());
+        EXPECT_GT(t.calls, out.num_points());
+        EXPECT_LT(t.worst_weight_sum, 1e-12);
+        for (std::size_t v = 0; v < out.num_points(); ++v)
+          ASSERT_NEAR(t.value[v], linear(out.points[v]), 1e-12) << "vertex " << v;
+        auto reference = mesh_of<genmesh_test::Halfedge_mesh>(soup);
+        EXPECT_EQ(run_on(reference).value, t.value); // identical on every backend
+      }
+}
+
+// ---------------------------------------------------------------------------
+// Tagged corners stay where they are at every level, interior or on the
+// border; out-of-range corners are refused with the mesh unchanged.
+
+TYPED_TEST(Subdivision, TaggedCornersStay) {
+  for (bool loop : {true, false}) {
+    SCOPED_TRACE(loop ? "Loop" : "Catmull-Clark");
+    const Polygon_soup soup = loop ? genmesh::make_grid_with_hole(6) : genmesh::make_torus(8, 6, false);
+    Polygon_soup bumpy = soup;
+    for (auto& p : bumpy.points) p.z() += std::sin(3 * p.x()) * std::cos(2 * p.y());
+    const std::vector<std::uint32_t> corners = {0, 9, 20};
+    auto g = mesh_of<TypeParam>(bumpy);
+    auto plain = mesh_of<TypeParam>(bumpy);
+    if (loop) {
+      genmesh::loop_subdivision(g, {.iterations = 2, .corners = corners});
+      genmesh::loop_subdivision(plain, {.iterations = 2});
+    } else {
+      genmesh::catmull_clark_subdivision(g, {.iterations = 2, .corners = corners});
+      genmesh::catmull_clark_subdivision(plain, {.iterations = 2});
+    }
+    const Polygon_soup out = genmesh::to_soup(g), moved = genmesh::to_soup(plain);
+    for (std::uint32_t c : corners) {
+      EXPECT_EQ(out.points[c], bumpy.points[c]) << c;
+      EXPECT_NE(moved.points[c], bumpy.points[c]) << c; // they would move untagged
+    }
+    EXPECT_TRUE(genmesh::check_mesh(g).ok());
+    auto h = mesh_of<TypeParam>(bumpy);
+    const Polygon_soup before = genmesh::to_soup(h);
+    const std::vector<std::uint32_t> bad = {static_cast<std::uint32_t>(bumpy.num_points())};
+    if (loop) EXPECT_THROW(genmesh::loop_subdivision(h, {.corners = bad}), genmesh::invalid_input);
+    else EXPECT_THROW(genmesh::catmull_clark_subdivision(h, {.corners = bad}), genmesh::invalid_input);
+    EXPECT_EQ(genmesh::to_soup(h), before);
+  }
+}
+
+// ---------------------------------------------------------------------------
+// A mesh with removed elements (here an isolated vertex removed, not yet
+// collected) cannot be refined in place; it is refined on a Halfedge_mesh copy
+// and rebuilt, with the same result as the mesh without that vertex, creases
+// included.
+
+TYPED_TEST(Subdivision, MeshWithRemovedElementsIsRefinedThroughACopy) {
+  for (bool loop : {true, false}) {
+    SCOPED_TRACE(loop ? "Loop" : "Catmull-Clark");
+    const Polygon_soup soup = loop ? genmesh::make_grid_with_hole(5) : genmesh::make_torus(8, 6, false);
+    Polygon_soup extra = soup;
+    extra.add_point(9, 9, 9); // isolated, removed below
+    auto g = mesh_of<TypeParam>(extra);
+    typename boost::graph_traits<TypeParam>::vertex_descriptor last{};
+    for (auto v : vertices(g)) last = v;
+    remove_vertex(last, g);
+    auto clean = mesh_of<TypeParam>(soup);
+    const auto sharp = sharpness_where(clean, [](std::size_t v) { return v < 6; }, 3.5);
+    genmesh::Subdivision_result a, b;
+    if (loop) {
+      a = genmesh::loop_subdivision(g, {.iterations = 2, .crease_sharpness = sharp});
+      b = genmesh::loop_subdivision(clean, {.iterations = 2, .crease_sharpness = sharp});
+    } else {
+      a = genmesh::catmull_clark_subdivision(g, {.iterations = 2, .crease_sharpness = sharp});
+      b = genmesh::catmull_clark_subdivision(clean, {.iterations = 2, .crease_sharpness = sharp});
+    }
+    EXPECT_EQ(a.vertices, b.vertices);
+    EXPECT_EQ(a.faces, b.faces);
+    EXPECT_TRUE(genmesh::check_mesh(g).ok());
+    EXPECT_EQ(genmesh::canonical(genmesh::to_soup(g)), genmesh::canonical(genmesh::to_soup(clean)));
+    // the sharpness follows the edges of each result: same multiset of crease edges by their end points
+    auto creased = [](const auto& m, const std::vector<double>& s) {
+      std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> out;
+      auto pts = get(genmesh::vertex_point, const_cast<std::remove_cvref_t<decltype(m)>&>(m));
+      std::size_t i = 0;
+      for (auto e : edges(m)) {
+        if (s.at(i++) <= 0) continue;
+        Eigen::Vector3d p = genmesh::to_eigen(get(pts, source(halfedge(e, m), m)));
+        Eigen::Vector3d q = genmesh::to_eigen(get(pts, target(halfedge(e, m), m)));
+        if (std::lexicographical_compare(q.data(), q.data() + 3, p.data(), p.data() + 3)) std::swap(p, q);
+        out.emplace_back(p, q);
+      }
+      std::sort(out.begin(), out.end(), [](const auto& x, const auto& y) {
+        return std::lexicographical_compare(x.first.data(), x.first.data() + 3, y.first.data(), y.first.data() + 3) ||
+               (x.first == y.first &&
+                std::lexicographical_compare(x.second.data(), x.second.data() + 3, y.second.data(), y.second.data() + 3));
+      });
+      return out;
+    };
+    EXPECT_EQ(creased(g, a.edge_sharpness), creased(clean, b.edge_sharpness));
+    EXPECT_FALSE(creased(g, a.edge_sharpness).empty());
+  }
+}
+
+} // namespace
+
+namespace {
+
+// In place: the old vertices keep their descriptors and their user
+// properties; the new ones get the property's default.
+TEST(SubdivisionInPlace, OldVerticesKeepTheirPropertiesNewOnesGetTheDefault) {
+  for (bool loop : {true, false}) {
+    SCOPED_TRACE(loop ? "Loop" : "Catmull-Clark");
+    auto g = mesh_of<genmesh_test::Halfedge_mesh>(loop ? genmesh::make_icosphere(1) : genmesh::make_cube());
+    auto tag = g.add_vertex_property<int>("v:tag", -1);
+    std::vector<genmesh::Vertex_index> old;
+    for (auto v : g.vertices()) tag[v] = static_cast<int>(old.size()), old.push_back(v);
+    if (loop) genmesh::loop_subdivision(g, {.iterations = 2});
+    else genmesh::catmull_clark_subdivision(g, {.iterations = 2});
+    for (std::size_t i = 0; i < old.size(); ++i) EXPECT_EQ(tag[old[i]], static_cast<int>(i));
+    std::size_t fresh = 0;
+    for (auto v : g.vertices()) fresh += tag[v] == -1;
+    EXPECT_EQ(fresh, g.n_vertices() - old.size());
+    EXPECT_TRUE(genmesh::check_mesh(g).ok());
   }
 }
 

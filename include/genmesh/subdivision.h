@@ -5,9 +5,10 @@
 // MutableFaceGraph with vertex points and vertex/halfedge index maps
 // (genmesh::Halfedge_mesh, CGAL::Surface_mesh, ...), returning a
 // genmesh::Subdivision_result {levels_done, vertices, faces}. Every level
-// computes all new positions from the old mesh first, then replaces the mesh
-// by the refined one, numbered deterministically, so every backend gives the
-// same mesh. See docs/subdivision.md.
+// computes all new positions from the old mesh first, then refines the
+// topology — in place for Loop and Catmull-Clark (detail/in_place.h), through
+// a rebuilt mesh for the others — numbered deterministically, so every
+// backend gives the same mesh. See docs/subdivision.md.
 #pragma once
 
 #include <genmesh/subdivision/butterfly.h>

@@ -9,19 +9,26 @@
 //                                                    R: mean of the n edge midpoints)
 //   border        edge midpoints; vertices 3/4 v + 1/8 (two border neighbours)
 //                 (Boundary_rule::smooth) or unchanged (fixed).
-// Numbering: old vertices, then edge points in edge iteration order, then face
-// points in face iteration order; faces: per old face, one quad per corner.
-// Guarantees: computed from the old mesh, then rebuilt into a fresh G (the
-// structure genmesh::build_mesh gives); identical on every backend; V' = V + E + F, F' = Σ deg f,
-// Euler characteristic and border loops kept. Same masks as CGAL's
-// CatmullClark_mask_3 on closed meshes.
+// Numbering (in place, see <genmesh/subdivision/detail/in_place.h>): old
+// vertices keep their numbers, then edge points in first-use order (faces in
+// face order, each from its lowest vertex), then
+// face points in face iteration order; old edges keep theirs (the half at
+// their halfedge's source), then the other halves, then the inner edges (edge
+// point – face point) face by face; each old n-gon keeps one of its n quads,
+// the others are appended.
+// Guarantees: computed from the old mesh, then refined in place (arrays
+// reserved once to the last level's size); identical on every backend;
+// V' = V + E + F, F' = Σ deg f, Euler characteristic and border loops kept.
+// Same masks as CGAL's CatmullClark_mask_3 on closed meshes.
 // Creases (.crease_sharpness): the rules of <genmesh/subdivision/loop.h>
-// (DeRose, Kass, Truong 1998) with Catmull-Clark's smooth masks.
-// Limits: g's other properties and descriptors do not survive a level
-// (in-place refinement is future work).
+// (DeRose, Kass, Truong 1998) with Catmull-Clark's smooth masks; tagged
+// corners (.corners) stay; .visitor.on_vertex receives every new vertex's mask.
+// Limits: g's other properties are not refined (new elements get their
+// defaults); a backend without set_next, or a mesh with removed elements, is
+// refined on a Halfedge_mesh copy and rebuilt.
 #pragma once
 
-#include <genmesh/subdivision/detail/refinement.h>
+#include <genmesh/subdivision/detail/in_place.h>
 
 namespace genmesh {
 
@@ -37,85 +44,230 @@ struct Catmull_clark_options {
   /// neighbours) / (n (n + 5)); border and crease vertices (p + 4v + q)/6,
   /// corners stay.
   bool limit = false;
+  /// Vertices (numbered in vertex iteration order) that are corners: they
+  /// keep their position at every level. Their numbers stay valid across levels.
+  std::vector<std::uint32_t> corners = {};
+  /// Attribute transport (masks of every new vertex) and level hooks.
+  Subdivision_visitor visitor = {};
 };
 
 namespace detail::subdivision {
 
-inline Polygon_soup catmull_clark_level(const Snapshot& s, const Catmull_clark_options& o,
-                                        const std::vector<double>& sharp) {
-  const std::uint32_t nv = static_cast<std::uint32_t>(s.num_vertices());
-  const std::uint32_t ne = static_cast<std::uint32_t>(s.num_edges());
-  const std::uint32_t nf = static_cast<std::uint32_t>(s.num_faces());
-  Polygon_soup out;
-  out.points.resize(std::size_t(nv) + ne + nf);
-  std::vector<Eigen::Vector3d> fp = face_centroids(s);
-  for (std::uint32_t f = 0; f < nf; ++f) out.points[std::size_t(nv) + ne + f] = fp[f];
-  std::vector<Eigen::Vector3d> q(nv, Eigen::Vector3d::Zero()), r(nv, Eigen::Vector3d::Zero());
-  for (std::uint32_t c = 0; c < s.corner_vertex.size(); ++c) q[s.corner_vertex[c]] += fp[s.corner_face[c]];
-  for (std::uint32_t e = 0; e < ne; ++e) {
-    std::uint32_t c = s.edge_corner[e], t = s.corner_twin[c];
-    std::uint32_t a = s.corner_vertex[c], b = s.head(c);
-    Eigen::Vector3d mid = 0.5 * (s.points[a] + s.points[b]);
-    r[a] += mid;
-    r[b] += mid;
-    out.points[nv + e] = t == k_none ? mid
-                                     : Eigen::Vector3d((s.points[a] + s.points[b] + fp[s.corner_face[c]] +
-                                                        fp[s.corner_face[t]]) / 4.0);
-    if (!sharp.empty() && t != k_none) out.points[nv + e] = crease_edge_point(s, sharp[e], e, out.points[nv + e]);
+/// Counts {V, E, F, corners} of g; throws naming a face whose cycle does not close.
+template <class G>
+std::array<std::size_t, 4> polygon_counts(const G& g, const char* scheme) {
+  std::size_t nv = 0, ne = 0, nf = 0, nc = 0, nh = 0;
+  for (auto v : vertices(g)) (void)v, ++nv;
+  for (auto e : edges(g)) (void)e, ++ne;
+  nh = 2 * ne;
+  for (auto f : faces(g)) {
+    const auto h0 = halfedge(f, g);
+    auto h = h0;
+    std::size_t n = 0;
+    do {
+      h = next(h, g);
+      if (++n > nh) throw invalid_input(std::string(scheme) + ": the cycle of face " + std::to_string(nf) + " is corrupt");
+    } while (h != h0);
+    nc += n;
+    ++nf;
   }
-  const Crease_stars cs = sharp.empty() ? Crease_stars{} : crease_stars(s, sharp);
-  for (std::uint32_t v = 0; v < nv; ++v) {
-    if (s.is_border_vertex(v)) {
-      out.points[v] = border_vertex_point(s, v, o.boundary);
-    } else {
-      const double n = s.valence[v];
-      out.points[v] = (q[v] / n + 2.0 * r[v] / n + (n - 3.0) * s.points[v]) / n;
-      if (!sharp.empty()) out.points[v] = crease_vertex_point(s, cs, v, out.points[v]);
-    }
-  }
-  out.indices.reserve(4 * s.corner_vertex.size());
-  out.offsets.reserve(s.corner_vertex.size() + 1);
-  for (std::uint32_t f = 0; f < nf; ++f)
-    for (std::uint32_t c = s.face_begin[f]; c < s.face_begin[f + 1]; ++c)
-      out.add_face({s.corner_vertex[c], nv + s.corner_edge[c], nv + ne + f, nv + s.corner_edge[s.prev(c)]});
-  return out;
+  return {nv, ne, nf, nc};
 }
 
-// The twin of every corner of the quad split: quad c (per old corner c, in
-// corner order) is (v_i, e_i, face point, e_i-1), so corner 4c + j.
-inline std::vector<std::uint32_t> quad_split_twins(const Snapshot& s) {
-  const std::size_t nc = s.corner_vertex.size();
-  std::vector<std::uint32_t> twin(4 * nc, k_none);
-  for (std::uint32_t c = 0; c < nc; ++c) {
-    const std::uint32_t n = s.next(c);
-    twin[4 * c + 1] = 4 * n + 2; // e_i → face point, in quad c; back in quad next(c)
-    twin[4 * n + 2] = 4 * c + 1;
-    const std::uint32_t t = s.corner_twin[c];
-    if (t == k_none) continue;
-    twin[4 * c] = 4 * s.next(t) + 3;     // first half of c ↔ second half of t
-    twin[4 * n + 3] = 4 * t;             // second half of c ↔ first half of t
+inline std::array<std::size_t, 4> quad_split_counts(std::array<std::size_t, 4> n) {
+  return {n[0] + n[1] + n[2], 2 * n[1] + n[3], n[3], 4 * n[3]};
+}
+
+/// One Catmull-Clark level in place on the dense mesh g of counts n.
+template <class G>
+void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
+                                  const Catmull_clark_options& o) {
+  using Vec = Eigen::Vector3d;
+  const std::size_t nv = n[0], ne = n[1], nf = n[2], nc = n[3];
+  const Subdivision_visitor& vis = o.visitor;
+  if (vis.on_level_begin) vis.on_level_begin(level, nv, nv + ne + nf);
+  auto pts = get(vertex_point, g);
+  auto vi = get(vertex_index, g);
+  auto fi = get(face_index, g);
+  auto num = [&](auto v) { return static_cast<std::uint32_t>(get(vi, v)); };
+  const Stars st = stars(g, nv, sharp, o.corners);
+  const bool creases = !sharp.empty();
+  auto av = append_elements(g, ne + nf, 0, 0);
+  // Σ face points per vertex (q), Σ ring neighbours (acc), Σ crease neighbours (ends)
+  std::vector<Vec> q(nv, Vec::Zero()), acc(nv, Vec::Zero()), ends(creases ? nv : 0, Vec::Zero());
+  std::vector<std::uint32_t> face_begin, face_corner; // for the visitor's masks
+  if (vis.on_vertex) face_begin.assign(1, 0), face_corner.reserve(nc);
+  std::vector<std::uint32_t> src;
+  std::vector<double> w;
+  std::vector<halfedge_descriptor_t<G>> xs;
+  auto old_target = [&](auto x) { return num(target(x, g)); };
+  std::vector<char> border_edge(vis.on_vertex ? ne : 0, 0);
+  std::vector<std::uint32_t> edge_faces(vis.on_vertex ? 4 * ne : 0); // a, b, f1, f2 per edge point (masks)
+  const auto null_face = boost::graph_traits<G>::null_face();
+  auto ei = get(edge_index, g);
+  // One pass over the faces (face order, each from its lowest vertex): face
+  // points, and the edge points numbered by first use (the face of the first
+  // use contributes first), so that the numbering and every sum are canonical.
+  std::vector<std::uint32_t> number(ne, k_none);
+  std::uint32_t used = 0;
+  std::size_t j = 0;
+  for (auto f : faces(g)) {
+    if (j == nf) break;
+    canonical_cycle(g, f, xs, old_target);
+    Vec sum = Vec::Zero();
+    for (const auto x : xs) sum += to_eigen(get(pts, source(x, g)));
+    const Vec c = sum / double(xs.size());
+    for (const auto x : xs) q[num(source(x, g))] += c;
+    put(pts, av.vertex(ne + j), from_eigen<point_t<G>>(c));
+    if (vis.on_vertex) {
+      src.clear();
+      for (const auto x : xs) face_corner.push_back(num(source(x, g))), src.push_back(face_corner.back());
+      face_begin.push_back(static_cast<std::uint32_t>(face_corner.size()));
+      w.assign(xs.size(), 1.0 / double(xs.size()));
+      vis.on_vertex(static_cast<std::uint32_t>(nv + ne + j), src, w);
+    }
+    for (const auto x : xs) {
+      const std::size_t k = static_cast<std::size_t>(get(ei, edge(x, g)));
+      const auto op = opposite(x, g);
+      // A second use proves the edge interior. A first use reads the border
+      // flag only where it matters at once (creases, the visitor); the border
+      // edges' points and the border vertices' rings are done after the pass.
+      const bool seen = number[k] != k_none;
+      const bool border = !seen && ((creases && sharp[k] > 0) || vis.on_vertex) && face(op, g) == null_face;
+      const auto [we, ww] = edge_weights(0.25, 0.25, border, creases ? sharp[k] : 0.0);
+      if (seen) { // second use: the other face point
+        if (ww != 0) {
+          const auto m = av.vertex(number[k]);
+          put(pts, m, from_eigen<point_t<G>>(Vec(to_eigen(get(pts, m)) + ww * c)));
+        }
+        continue;
+      }
+      const std::uint32_t i = number[k] = used++;
+      const auto va = source(x, g), vb = target(x, g);
+      const std::uint32_t a = num(va), b = num(vb);
+      const Vec pa = to_eigen(get(pts, va)), pb = to_eigen(get(pts, vb));
+      Vec p = we * (pa + pb);
+      if (ww != 0) p += ww * c;
+      put(pts, av.vertex(i), from_eigen<point_t<G>>(p));
+      if (!st.is_border(a)) acc[a] += pb;
+      if (!st.is_border(b)) acc[b] += pa;
+      if (creases && !border && sharp[k] > 0) ends[a] += pb, ends[b] += pa;
+      if (vis.on_vertex) {
+        border_edge[i] = border;
+        edge_faces[4 * i] = a, edge_faces[4 * i + 1] = b, edge_faces[4 * i + 2] = static_cast<std::uint32_t>(j);
+        edge_faces[4 * i + 3] = border ? k_none : static_cast<std::uint32_t>(get(fi, face(op, g)));
+      }
+    }
+    ++j;
   }
-  return twin;
+  // border edges: midpoints, and the border neighbours of border vertices
+  // (two per vertex where the ring is used: their sum does not depend on the order)
+  for_each_old_edge(g, [&](std::uint32_t k, auto h, std::uint32_t a, std::uint32_t b, bool border) {
+    if (!border) return;
+    const Vec pa = to_eigen(get(pts, source(h, g))), pb = to_eigen(get(pts, target(h, g)));
+    put(pts, av.vertex(number[k]), from_eigen<point_t<G>>(Vec(0.5 * (pa + pb))));
+    acc[a] += pb;
+    acc[b] += pa;
+  });
+  auto add_face_mask = [&](std::size_t jf, double weight, std::vector<std::uint32_t>& s, std::vector<double>& ws) {
+    const std::uint32_t b = face_begin[jf], e = face_begin[jf + 1];
+    for (std::uint32_t c = b; c < e; ++c) s.push_back(face_corner[c]), ws.push_back(weight / double(e - b));
+  };
+  if (vis.on_vertex) {
+    std::vector<std::uint32_t> k_of(ne);
+    for (std::uint32_t k = 0; k < ne; ++k) k_of[number[k]] = k;
+    for (std::uint32_t i = 0; i < ne; ++i) {
+      const bool border = border_edge[i] != 0;
+      const auto [we, ww] = edge_weights(0.25, 0.25, border, creases ? sharp[k_of[i]] : 0.0);
+      src.assign({edge_faces[4 * i], edge_faces[4 * i + 1]});
+      w.assign({we, we});
+      if (ww != 0) {
+        add_face_mask(edge_faces[4 * i + 2], ww, src, w);
+        add_face_mask(edge_faces[4 * i + 3], ww, src, w);
+      }
+      vis.on_vertex(static_cast<std::uint32_t>(nv + i), src, w);
+    }
+  }
+  std::vector<Vertex_rule> rules(vis.on_vertex ? nv : 0);
+  {
+    std::uint32_t i = 0;
+    for (auto v : vertices(g)) {
+      if (i == nv) break;
+      const double val = st.valence[i];
+      const Vertex_rule smooth = val == 0 ? Vertex_rule{} : Vertex_rule{(val - 2.0) / val, 1.0 / (val * val), 0, 1.0 / (val * val)};
+      const Vertex_rule r = vertex_rule(st, i, o.boundary, smooth);
+      Vec p = r.self * to_eigen(get(pts, v)) + r.ring * acc[i];
+      if (r.faces != 0) p += r.faces * q[i];
+      if (r.ends != 0) p += r.ends * ends[i];
+      acc[i] = p;
+      if (vis.on_vertex) rules[i] = r;
+      ++i;
+    }
+  }
+  if (vis.on_vertex) {
+    const Neighbours nb = neighbours(g, st, number);
+    std::vector<double> sharp_by_number(creases ? ne : 0);
+    for (std::size_t k = 0; k < sharp_by_number.size(); ++k) sharp_by_number[number[k]] = sharp[k];
+    // the faces around each old vertex, from the corner lists
+    std::vector<std::uint32_t> vf_begin(nv + 1, 0), vf(face_corner.size());
+    for (std::uint32_t c : face_corner) ++vf_begin[c + 1];
+    for (std::size_t v = 0; v < nv; ++v) vf_begin[v + 1] += vf_begin[v];
+    std::vector<std::uint32_t> fill(vf_begin.begin(), vf_begin.end() - 1);
+    for (std::uint32_t jf = 0; jf < nf; ++jf)
+      for (std::uint32_t c = face_begin[jf]; c < face_begin[jf + 1]; ++c) vf[fill[face_corner[c]]++] = jf;
+    for (std::uint32_t v = 0; v < nv; ++v)
+      emit_vertex_mask<G>(
+          vis, st, nb, rules[v], v, sharp_by_number, [&](std::uint32_t k) { return border_edge[k] != 0; },
+          [&](std::uint32_t x, double weight, std::vector<std::uint32_t>& s, std::vector<double>& ws) {
+            for (std::uint32_t i = vf_begin[x]; i < vf_begin[x + 1]; ++i) add_face_mask(vf[i], weight, s, ws);
+          },
+          src, w);
+  }
+  {
+    std::uint32_t i = 0;
+    for (auto v : vertices(g)) {
+      if (i == nv) break;
+      put(pts, v, from_eigen<point_t<G>>(acc[i++]));
+    }
+  }
+  std::vector<Vec>().swap(acc);
+  std::vector<Vec>().swap(q);
+  std::vector<Vec>().swap(ends);
+  if (creases) {
+    std::vector<double> child(2 * ne + nc, 0.0);
+    for (std::size_t k = 0; k < ne; ++k)
+      child[k] = child[ne + number[k]] = sharp[k] > 0 ? std::max(0.0, sharp[k] - 1.0) : 0.0;
+    sharp = std::move(child);
+  }
+  auto ae = append_elements(g, 0, ne + nc, nc - nf);
+  split_edges(g, av, ae, nv, ne, number);
+  cut_polygons(g, av, ae, nv, ne, nf);
+  if (vis.on_level_end) vis.on_level_end(level);
 }
 
 } // namespace detail::subdivision
 
 /// Applies options.iterations levels of Catmull-Clark subdivision to g (any
 /// polygons). Throws genmesh::invalid_input, g unchanged, when
-/// options.iterations < 0 or a face cycle is corrupt.
+/// options.iterations < 0, a face cycle is corrupt, crease_sharpness has
+/// another size than the edge count, a corner number is out of range, or an
+/// edge has no face on either side.
 template <class G>
   requires detail::subdivision::Subdividable<G>
 Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options& options = {}) {
   namespace ds = detail::subdivision;
-  std::vector<double> sharp = options.crease_sharpness;
-  Subdivision_result r = ds::run_levels(
-      g, options.iterations, "catmull_clark_subdivision", 0, sharp,
-      [&](const ds::Snapshot& s, int) {
-        return ds::Refined{ds::catmull_clark_level(s, options, sharp), ds::quad_split_twins(s)};
+  Subdivision_result r = ds::run_in_place(
+      g, options.iterations, "catmull_clark_subdivision", options.crease_sharpness, options.corners,
+      [](const auto& m) { return ds::polygon_counts(m, "catmull_clark_subdivision"); },
+      [&](auto& m, int level, const std::array<std::size_t, 4>& n, std::vector<double>& sharp) {
+        ds::catmull_clark_level_in_place(m, level, n, sharp, options);
       },
-      [](const ds::Snapshot& s, std::uint32_t c, int h) { return h == 0 ? 4 * c : 4 * s.next(c) + 3; });
-  if (options.limit && options.iterations > 0)
+      ds::quad_split_counts);
+  if (options.limit && options.iterations > 0) {
+    std::vector<char> corner(r.vertices, 0);
+    for (std::uint32_t c : options.corners) corner[c] = 1;
     ds::move_to_limit(g, r.edge_sharpness, [&](const ds::Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
+      if (corner[v]) return s.points[v];
       if (s.is_border_vertex(v)) return ds::border_limit_point(s, v, options.boundary);
       const double n = s.valence[v];
       Eigen::Vector3d edges = Eigen::Vector3d::Zero(), diagonals = Eigen::Vector3d::Zero();
@@ -126,6 +278,7 @@ Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options& 
       }
       return (n * n * s.points[v] + 4.0 * edges + diagonals) / (n * (n + 5.0));
     });
+  }
   return r;
 }
 

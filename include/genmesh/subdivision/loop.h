@@ -9,26 +9,33 @@
 //                 β = 3/16 (n = 3), 3/(8n) otherwise      (Loop_weights::warren)
 //   border        edge midpoints; vertices 3/4 v + 1/8 (two border neighbours)
 //                 (Boundary_rule::smooth, the cubic B-spline) or unchanged (fixed).
-// Numbering: old vertices keep their order, then one new vertex per edge in
-// edge iteration order; faces: per old face (a, b, c), the corner triangles at
-// a, b, c, then the middle one.
-// Guarantees: positions are computed from the old mesh only, then the mesh is
-// rebuilt into a fresh G (the structure genmesh::build_mesh gives), moved into g; the same input
-// gives the same mesh on every backend; V' = V + E, F' = 4F, the Euler
-// characteristic and the border loops are kept.
+// Numbering (in place, see <genmesh/subdivision/detail/in_place.h>): old
+// vertices keep their numbers, then one new vertex per old edge in first-use
+// order (faces in face order, each from its lowest vertex); old edges keep
+// theirs (the half at their halfedge's source), then the other halves in the
+// same order, then three inner edges per old face; each old face becomes the
+// middle triangle, the corner triangles are appended.
+// Guarantees: positions are computed from the old mesh only, then the
+// topology is refined in place with the MutableFaceGraph functions (new
+// elements appended, arrays reserved once to the last level's size); the
+// same input gives the same mesh on every backend; V' = V + E, F' = 4F, the
+// Euler characteristic and the border loops are kept.
 // Creases (.crease_sharpness, per edge): an edge of sharpness s ≥ 1 gets its
 // midpoint, 0 < s < 1 the blend (1 − s) smooth + s midpoint; an interior
 // vertex with two crease edges the crease rule (p + 6v + q)/8, with three or
 // more the corner rule (stays), blended likewise by the mean sharpness; the
 // halves of a crease edge get s − 1 (DeRose, Kass, Truong, "Subdivision
 // surfaces in character animation", SIGGRAPH 1998). Border vertices keep the
-// border rule.
-// Limits: triangles only (refused, mesh unchanged); g's other properties and
-// its descriptors do not survive a level (a direct in-place refinement is
-// future work); positions go through double precision.
+// border rule. Tagged corners (.corners) stay where they are.
+// Attributes: .visitor.on_vertex receives every new vertex's mask (old
+// vertices and weights), so user data can be blended with the same rules.
+// Limits: triangles only (refused, mesh unchanged); g's other properties
+// are not refined (new elements get their defaults); a backend without
+// set_next, or a mesh with removed elements, is refined on a Halfedge_mesh
+// copy and rebuilt; positions go through double precision.
 #pragma once
 
-#include <genmesh/subdivision/detail/refinement.h>
+#include <genmesh/subdivision/detail/in_place.h>
 
 #include <cmath>
 #include <numbers>
@@ -53,6 +60,12 @@ struct Loop_options {
   /// position: (1 − nγ) v + γ Σ neighbours, γ = 1/(3/(8β) + n); border and
   /// crease vertices (p + 4v + q)/6, corners stay.
   bool limit = false;
+  /// Vertices (numbered in vertex iteration order) that are corners: they
+  /// keep their position at every level, like a vertex with three or more
+  /// crease edges. Their numbers stay valid across levels.
+  std::vector<std::uint32_t> corners = {};
+  /// Attribute transport (masks of every new vertex) and level hooks.
+  Subdivision_visitor visitor = {};
 };
 
 namespace detail::subdivision {
@@ -63,45 +76,158 @@ inline double loop_beta(std::uint32_t n, Loop_weights w) {
   return (5.0 / 8.0 - c * c) / n;
 }
 
-inline Polygon_soup loop_level(const Snapshot& s, const Loop_options& o, const std::vector<double>& sharp) {
-  const std::uint32_t nv = static_cast<std::uint32_t>(s.num_vertices());
-  Polygon_soup out;
-  out.points.resize(s.num_vertices() + s.num_edges());
-  // vertex points
-  std::vector<Eigen::Vector3d> ring(nv, Eigen::Vector3d::Zero());
-  for (std::uint32_t e = 0; e < s.num_edges(); ++e) {
-    std::uint32_t c = s.edge_corner[e], a = s.corner_vertex[c], b = s.head(c);
-    ring[a] += s.points[b];
-    ring[b] += s.points[a];
+/// Counts {V, E, F, corners} of g; throws naming the first face that is not a triangle.
+template <class G>
+std::array<std::size_t, 4> triangle_counts(const G& g, const char* scheme) {
+  std::size_t nv = 0, ne = 0, nf = 0;
+  for (auto v : vertices(g)) (void)v, ++nv;
+  for (auto e : edges(g)) (void)e, ++ne;
+  for (auto f : faces(g)) {
+    const auto h0 = halfedge(f, g);
+    auto h = h0;
+    std::size_t n = 0;
+    do {
+      h = next(h, g);
+      if (++n > 2 * ne) throw invalid_input(std::string(scheme) + ": the cycle of face " + std::to_string(nf) + " is corrupt");
+    } while (h != h0);
+    if (n != 3)
+      throw invalid_input(std::string(scheme) + ": face " + std::to_string(nf) + " has " + std::to_string(n) +
+                          " sides; the scheme takes only 3-sided faces (the mesh is unchanged)");
+    ++nf;
   }
+  return {nv, ne, nf, 3 * nf};
+}
+
+inline std::array<std::size_t, 4> one_to_four_counts(std::array<std::size_t, 4> n) {
+  return {n[0] + n[1], 2 * n[1] + 3 * n[2], 4 * n[2], 12 * n[2]};
+}
+
+/// One Loop level in place on the dense triangle mesh g of counts n.
+template <class G>
+void loop_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
+                         const Loop_options& o) {
+  using Vec = Eigen::Vector3d;
+  const std::size_t nv = n[0], ne = n[1], nf = n[2];
+  const Subdivision_visitor& vis = o.visitor;
+  if (vis.on_level_begin) vis.on_level_begin(level, nv, nv + ne);
+  auto pts = get(vertex_point, g);
+  const Stars st = stars(g, nv, sharp, o.corners);
   const bool creases = !sharp.empty();
-  const Crease_stars cs = creases ? crease_stars(s, sharp) : Crease_stars{};
-  for (std::uint32_t v = 0; v < nv; ++v) {
-    if (s.is_border_vertex(v)) {
-      out.points[v] = border_vertex_point(s, v, o.boundary);
-    } else {
-      const std::uint32_t n = s.valence[v];
-      const double beta = loop_beta(n, o.weights);
-      out.points[v] = (1.0 - n * beta) * s.points[v] + beta * ring[v];
-      if (creases) out.points[v] = crease_vertex_point(s, cs, v, out.points[v]);
+  auto av = append_elements(g, ne, 0, 0);
+  std::vector<Vec> acc(nv, Vec::Zero()), ends(creases ? nv : 0, Vec::Zero());
+  std::vector<char> border_edge(vis.on_vertex ? ne : 0, 0);
+  std::vector<std::uint32_t> src;
+  std::vector<double> w;
+  auto vi = get(vertex_index, g);
+  auto ei = get(edge_index, g);
+  auto num = [&](auto v) { return static_cast<std::uint32_t>(get(vi, v)); };
+  const auto null_face = boost::graph_traits<G>::null_face();
+  // Edge points, numbered by first use (faces in face order, each from its
+  // lowest vertex), so that the numbering and every sum are canonical.
+  std::vector<std::uint32_t> number(ne, k_none);
+  std::uint32_t used = 0;
+  std::size_t j = 0;
+  for (auto f : faces(g)) {
+    if (j++ == nf) break;
+    const auto x0 = halfedge(f, g), x1 = next(x0, g), x2 = next(x1, g);
+    halfedge_descriptor_t<G> xs[3] = {x0, x1, x2};
+    const std::uint32_t t0 = num(target(x0, g)), t1 = num(target(x1, g)), t2 = num(target(x2, g));
+    if (t0 < t1 && t0 < t2) std::rotate(xs, xs + 1, xs + 3);
+    else if (t1 < t0 && t1 < t2) std::rotate(xs, xs + 2, xs + 3);
+    for (int t = 0; t < 3; ++t) {
+      const auto x = xs[t];
+      const std::size_t k = static_cast<std::size_t>(get(ei, edge(x, g)));
+      const auto op = opposite(x, g);
+      // A second use proves the edge interior. A first use reads the border
+      // flag only where it matters at once (creases, the visitor); the border
+      // edges' points and the border vertices' rings are done after the pass.
+      const bool seen = number[k] != k_none;
+      const bool border = !seen && ((creases && sharp[k] > 0) || vis.on_vertex) && face(op, g) == null_face;
+      const auto [we, ww] = edge_weights(0.375, 0.125, border, creases ? sharp[k] : 0.0);
+      const auto vc = target(xs[(t + 1) % 3], g); // this face's wing
+      if (seen) { // second use: the other wing
+        if (ww != 0) {
+          const auto m = av.vertex(number[k]);
+          put(pts, m, from_eigen<point_t<G>>(Vec(to_eigen(get(pts, m)) + ww * to_eigen(get(pts, vc)))));
+        }
+        continue;
+      }
+      const std::uint32_t i = number[k] = used++;
+      const auto va = source(x, g), vb = target(x, g);
+      const std::uint32_t a = num(va), b = num(vb);
+      const Vec pa = to_eigen(get(pts, va)), pb = to_eigen(get(pts, vb));
+      Vec p = we * (pa + pb);
+      if (ww != 0) p += ww * to_eigen(get(pts, vc));
+      put(pts, av.vertex(i), from_eigen<point_t<G>>(p));
+      if (!st.is_border(a)) acc[a] += pb;
+      if (!st.is_border(b)) acc[b] += pa;
+      if (creases && !border && sharp[k] > 0) ends[a] += pb, ends[b] += pa;
+      if (vis.on_vertex) {
+        border_edge[i] = border;
+        src.assign({a, b});
+        w.assign({we, we});
+        if (ww != 0) {
+          const auto vd = target(next(op, g), g);
+          src.push_back(num(vc)), src.push_back(num(vd)), w.push_back(ww), w.push_back(ww);
+        }
+        vis.on_vertex(static_cast<std::uint32_t>(nv + i), src, w);
+      }
     }
   }
-  // edge points
-  for (std::uint32_t e = 0; e < s.num_edges(); ++e) {
-    std::uint32_t c = s.edge_corner[e], t = s.corner_twin[c];
-    const Eigen::Vector3d& a = s.points[s.corner_vertex[c]];
-    const Eigen::Vector3d& b = s.points[s.head(c)];
-    if (t == k_none) {
-      out.points[nv + e] = 0.5 * (a + b);
-    } else {
-      const Eigen::Vector3d& x = s.points[s.corner_vertex[s.prev(c)]];
-      const Eigen::Vector3d& y = s.points[s.corner_vertex[s.prev(t)]];
-      out.points[nv + e] = 0.375 * (a + b) + 0.125 * (x + y);
-      if (creases) out.points[nv + e] = crease_edge_point(s, sharp[e], e, out.points[nv + e]);
+  // border edges: midpoints, and the border neighbours of border vertices
+  // (two per vertex where the ring is used: their sum does not depend on the order)
+  for_each_old_edge(g, [&](std::uint32_t k, auto h, std::uint32_t a, std::uint32_t b, bool border) {
+    if (!border) return;
+    const Vec pa = to_eigen(get(pts, source(h, g))), pb = to_eigen(get(pts, target(h, g)));
+    put(pts, av.vertex(number[k]), from_eigen<point_t<G>>(Vec(0.5 * (pa + pb))));
+    acc[a] += pb;
+    acc[b] += pa;
+  });
+  std::vector<Vertex_rule> rules(vis.on_vertex ? nv : 0);
+  {
+    std::array<double, 64> beta_of; // β by valence (a cosine per vertex is measurable)
+    beta_of.fill(-1.0);
+    std::uint32_t i = 0;
+    for (auto v : vertices(g)) {
+      if (i == nv) break;
+      const std::uint32_t val = st.valence[i];
+      if (val < beta_of.size() && beta_of[val] < 0) beta_of[val] = loop_beta(val, o.weights);
+      const double beta = val == 0 ? 0.0 : val < beta_of.size() ? beta_of[val] : loop_beta(val, o.weights);
+      const Vertex_rule r = vertex_rule(st, i, o.boundary, {1.0 - val * beta, beta, 0, 0});
+      Vec p = r.self * to_eigen(get(pts, v)) + r.ring * acc[i];
+      if (r.ends != 0) p += r.ends * ends[i];
+      acc[i] = p;
+      if (vis.on_vertex) rules[i] = r;
+      ++i;
     }
   }
-  emit_one_to_four(s, nv, out);
-  return out;
+  if (vis.on_vertex) {
+    const Neighbours nb = neighbours(g, st, number);
+    std::vector<double> sharp_by_number(creases ? ne : 0);
+    for (std::size_t k = 0; k < sharp_by_number.size(); ++k) sharp_by_number[number[k]] = sharp[k];
+    for (std::uint32_t v = 0; v < nv; ++v)
+      emit_vertex_mask<G>(vis, st, nb, rules[v], v, sharp_by_number,
+                          [&](std::uint32_t k) { return border_edge[k] != 0; }, [](auto...) {}, src, w);
+  }
+  {
+    std::uint32_t i = 0;
+    for (auto v : vertices(g)) {
+      if (i == nv) break;
+      put(pts, v, from_eigen<point_t<G>>(acc[i++]));
+    }
+  }
+  std::vector<Vec>().swap(acc);
+  std::vector<Vec>().swap(ends);
+  if (creases) {
+    std::vector<double> child(2 * ne + 3 * nf, 0.0);
+    for (std::size_t k = 0; k < ne; ++k)
+      child[k] = child[ne + number[k]] = sharp[k] > 0 ? std::max(0.0, sharp[k] - 1.0) : 0.0;
+    sharp = std::move(child);
+  }
+  auto ae = append_elements(g, 0, ne + 3 * nf, 3 * nf);
+  split_edges(g, av, ae, nv, ne, number);
+  cut_triangles(g, ae, nv, ne, nf);
+  if (vis.on_level_end) vis.on_level_end(level);
 }
 
 } // namespace detail::subdivision
@@ -109,19 +235,26 @@ inline Polygon_soup loop_level(const Snapshot& s, const Loop_options& o, const s
 /// Applies options.iterations levels of Loop subdivision to the triangle mesh
 /// g (positions through get(genmesh::vertex_point, g)). Throws
 /// genmesh::invalid_input naming the first non-triangle face (in face
-/// iteration order) and leaves g unchanged when g is not a triangle mesh, or
-/// when options.iterations < 0.
+/// iteration order) and leaves g unchanged when g is not a triangle mesh,
+/// when options.iterations < 0, when crease_sharpness has another size than
+/// the edge count, when a corner number is out of range, or when an edge has
+/// no face on either side.
 template <class G>
   requires detail::subdivision::Subdividable<G>
 Subdivision_result loop_subdivision(G& g, const Loop_options& options = {}) {
   namespace ds = detail::subdivision;
-  std::vector<double> sharp = options.crease_sharpness;
-  Subdivision_result r = ds::run_levels(
-      g, options.iterations, "loop_subdivision", 3, sharp,
-      [&](const ds::Snapshot& s, int) { return ds::Refined{ds::loop_level(s, options, sharp), ds::one_to_four_twins(s)}; },
-      ds::one_to_four_half);
-  if (options.limit && options.iterations > 0)
+  Subdivision_result r = ds::run_in_place(
+      g, options.iterations, "loop_subdivision", options.crease_sharpness, options.corners,
+      [](const auto& m) { return ds::triangle_counts(m, "loop_subdivision"); },
+      [&](auto& m, int level, const std::array<std::size_t, 4>& n, std::vector<double>& sharp) {
+        ds::loop_level_in_place(m, level, n, sharp, options);
+      },
+      ds::one_to_four_counts);
+  if (options.limit && options.iterations > 0) {
+    std::vector<char> corner(r.vertices, 0);
+    for (std::uint32_t c : options.corners) corner[c] = 1;
     ds::move_to_limit(g, r.edge_sharpness, [&](const ds::Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
+      if (corner[v]) return s.points[v];
       if (s.is_border_vertex(v)) return ds::border_limit_point(s, v, options.boundary);
       const std::uint32_t n = s.valence[v];
       Eigen::Vector3d ring = Eigen::Vector3d::Zero();
@@ -130,6 +263,7 @@ Subdivision_result loop_subdivision(G& g, const Loop_options& options = {}) {
       const double gamma = 1.0 / (3.0 / (8.0 * ds::loop_beta(n, options.weights)) + n);
       return (1.0 - n * gamma) * s.points[v] + gamma * ring;
     });
+  }
   return r;
 }
 

@@ -1,0 +1,539 @@
+// genmesh/subdivision/detail/in_place.h — in-place refinement for Loop and
+// Catmull-Clark: the old elements keep their indices, the new ones are
+// appended, and the arrays are reserved once to the size of the last level.
+//
+// One level on a MutableFaceGraph g whose indices are dense (no removed
+// elements; checked once per call):
+//   1. read the old mesh: one pass over the old faces (face order, each from
+//      its lowest-numbered vertex) numbers the old edges by first use and
+//      writes every edge (and face) point straight into its appended vertex;
+//      the old vertices' new positions go to one scratch array, written back
+//      after all reads;
+//   2. split every old edge k at its new vertex (the old edge keeps the half
+//      from its halfedge(e)'s source, an appended edge the other half; border
+//      cycles relinked), then
+//   3. cut every old face: 1-to-4 (Loop) or into n quads around its face
+//      point (Catmull-Clark); the old face keeps one of its children.
+// Canonical: faces are read from their lowest vertex, edges numbered by
+// first use and every sum taken in that order, so the result depends only on
+// the vertex numbering and the face cycles — not on halfedge(f), halfedge(v)
+// or the edge order — and is the same on every backend.
+// Element order: vertices = old ones, then one per old edge (first use), then
+// (Catmull-Clark) one per old face (face order); edges = old edges, their
+// other halves (first-use order), then the inner edges face by face; faces =
+// old faces, then the new ones face by face. A backend may append elements in
+// bulk with genmesh_native_append_elements(g, nv, ne, nf) (found by ADL, see
+// <genmesh/detail/halfedge_mesh_bulk.h>); otherwise add_vertex/add_edge/
+// add_face are called one by one.
+// Other backends (no set_next, as the incidence mesh) and meshes with removed
+// elements are refined on a Halfedge_mesh copy with the same vertex and face
+// numbering, and the result (faces from their lowest vertex) is linked into a
+// fresh G through link_soup (the backend's genmesh_native_link_soup when it
+// has one).
+#pragma once
+
+#include <genmesh/halfedge_mesh.h>
+#include <genmesh/subdivision/detail/refinement.h>
+
+#include <algorithm>
+#include <array>
+#include <functional>
+#include <span>
+
+namespace genmesh {
+
+/// Attribute transport and observation for loop_subdivision() and
+/// catmull_clark_subdivision(). Every member may be left empty.
+struct Subdivision_visitor {
+  /// Before level `level` (0-based within the call) with the vertex counts
+  /// before and after it.
+  std::function<void(int level, std::size_t old_vertices, std::size_t new_vertices)> on_level_begin;
+  /// Once per vertex of the refined level, numbered in the refined mesh's
+  /// vertex iteration order: the vertices of the level before (numbered in
+  /// its vertex iteration order) and the weights, summing to 1, whose
+  /// combination of their old positions is its new position (a source may
+  /// appear more than once; add its weights). Blend user attributes with
+  /// them. Called before the topology changes, in no promised order.
+  std::function<void(std::uint32_t vertex, std::span<const std::uint32_t> sources,
+                     std::span<const double> weights)> on_vertex;
+  /// After level `level`, once the mesh is refined.
+  std::function<void(int level)> on_level_end;
+};
+
+namespace detail::subdivision {
+
+/// A mesh refined in place: mutable, with vertex, halfedge and face indices.
+template <class G>
+concept In_place_refinable = MutableFaceGraph<G> && FaceListGraph<G> && VertexListGraph<G> && EdgeListGraph<G> &&
+                             HasIndexMap<G, vertex_index_t> && HasIndexMap<G, halfedge_index_t> &&
+                             HasIndexMap<G, edge_index_t> && HasIndexMap<G, face_index_t> && HasVertexPoints<G>;
+
+template <class G>
+concept Has_native_append = requires(G& g, std::size_t n) { genmesh_native_append_elements(g, n, n, n); };
+
+/// Elements added one by one through the MutableFaceGraph functions.
+template <class G>
+struct Generic_appended {
+  const G* g = nullptr;
+  std::vector<vertex_descriptor_t<G>> vs;
+  std::vector<halfedge_descriptor_t<G>> hs;
+  std::vector<face_descriptor_t<G>> fs;
+  vertex_descriptor_t<G> vertex(std::size_t k) const { return vs[k]; }
+  halfedge_descriptor_t<G> halfedge(std::size_t k, unsigned i) const { return i == 0 ? hs[k] : opposite(hs[k], *g); }
+  face_descriptor_t<G> face(std::size_t k) const { return fs[k]; }
+};
+
+/// nv vertices, ne edges, nf faces more; the result names the k-th of each.
+template <class G>
+auto append_elements(G& g, std::size_t nv, std::size_t ne, std::size_t nf) {
+  if constexpr (Has_native_append<G>) {
+    return genmesh_native_append_elements(g, nv, ne, nf);
+  } else {
+    Generic_appended<G> a;
+    a.g = &g;
+    a.vs.reserve(nv);
+    a.hs.reserve(ne);
+    a.fs.reserve(nf);
+    for (std::size_t k = 0; k < nv; ++k) a.vs.push_back(add_vertex(g));
+    for (std::size_t k = 0; k < ne; ++k) a.hs.push_back(halfedge(add_edge(g), g));
+    for (std::size_t k = 0; k < nf; ++k) a.fs.push_back(add_face(g));
+    return a;
+  }
+}
+
+/// No removed elements: iteration order is index order and new elements go to the end.
+template <class G>
+bool is_dense(const G& g) {
+  std::size_t n = 0;
+  for (auto v : vertices(g)) (void)v, ++n;
+  if (n != index_bound(vertex_index, g)) return false;
+  n = 0;
+  for (auto h : halfedges(g)) (void)h, ++n;
+  if (n != index_bound(halfedge_index, g)) return false;
+  n = 0;
+  for (auto f : faces(g)) (void)f, ++n;
+  return n == index_bound(face_index, g);
+}
+
+/// The halfedges of face f into xs, xs[0] leaving f's lowest-numbered vertex
+/// (the canonical start: the result does not depend on halfedge(f)).
+/// old_target(x) gives the vertex number x pointed to before the split.
+template <class G, class Old_target>
+void canonical_cycle(const G& g, face_descriptor_t<G> f, std::vector<halfedge_descriptor_t<G>>& xs,
+                     Old_target old_target) {
+  xs.clear();
+  const auto x0 = halfedge(f, g);
+  auto x = x0;
+  do {
+    xs.push_back(x);
+    x = next(x, g);
+  } while (x != x0);
+  const std::size_t n = xs.size();
+  std::size_t best = 0;
+  std::uint32_t lowest = k_none;
+  for (std::size_t t = 0; t < n; ++t) {
+    const std::uint32_t v = old_target(xs[t]); // the source of xs[t + 1]
+    if (v < lowest) lowest = v, best = (t + 1) % n;
+  }
+  std::rotate(xs.begin(), xs.begin() + static_cast<std::ptrdiff_t>(best), xs.end());
+}
+
+/// Per old vertex, from one pass over the old edges.
+struct Stars {
+  std::vector<std::uint32_t> valence;
+  std::vector<std::uint8_t> border;      ///< border edges at the vertex (saturated at 255)
+  std::vector<std::uint32_t> creases;    ///< crease edges (sharpness > 0, not border)
+  std::vector<double> crease_sharpness;  ///< their sharpness sum
+  std::vector<char> corner;              ///< tagged corners
+  bool is_border(std::uint32_t v) const { return border[v] != 0 || valence[v] == 0; }
+};
+
+/// A vertex rule: new = self·v + ring·(Σ ring neighbours) + ends·(Σ crease
+/// neighbours) + faces·(Σ face points around v). The ring is every neighbour
+/// of an interior vertex and the border neighbours of a border vertex.
+struct Vertex_rule {
+  double self = 1, ring = 0, ends = 0, faces = 0;
+};
+
+/// The rule of old vertex v given its smooth interior rule: border (cubic
+/// B-spline or fixed), tagged corner (stays), creases (DeRose, Kass, Truong
+/// 1998: crease rule with two crease edges, corner rule with more, blended
+/// by the mean sharpness below 1).
+inline Vertex_rule vertex_rule(const Stars& st, std::uint32_t v, Boundary_rule boundary, Vertex_rule smooth) {
+  if (!st.corner.empty() && st.corner[v]) return {};
+  if (st.is_border(v)) {
+    if (boundary == Boundary_rule::fixed || st.border[v] != 2) return {};
+    return {0.75, 0.125, 0, 0};
+  }
+  if (st.creases.empty() || st.creases[v] < 2) return smooth;
+  const Vertex_rule sharp = st.creases[v] == 2 ? Vertex_rule{0.75, 0, 0.125, 0} : Vertex_rule{};
+  const double m = st.crease_sharpness[v] / st.creases[v];
+  if (m >= 1) return sharp;
+  return {(1 - m) * smooth.self + m * sharp.self, (1 - m) * smooth.ring, m * sharp.ends, (1 - m) * smooth.faces};
+}
+
+/// The old edges in edge iteration order with their halfedge, ends and border flag.
+template <class G, class Fn>
+void for_each_old_edge(G& g, Fn fn) {
+  auto vi = get(vertex_index, g);
+  std::uint32_t k = 0;
+  for (auto e : edges(g)) {
+    const auto h = halfedge(e, g), o = opposite(h, g);
+    const bool border = face(h, g) == boost::graph_traits<G>::null_face() ||
+                        face(o, g) == boost::graph_traits<G>::null_face();
+    fn(k++, h, static_cast<std::uint32_t>(get(vi, source(h, g))), static_cast<std::uint32_t>(get(vi, target(h, g))),
+       border);
+  }
+}
+
+template <class G>
+Stars stars(G& g, std::size_t nv, const std::vector<double>& sharp, const std::vector<std::uint32_t>& corners) {
+  Stars st;
+  st.valence.assign(nv, 0);
+  st.border.assign(nv, 0);
+  if (!sharp.empty()) {
+    st.creases.assign(nv, 0);
+    st.crease_sharpness.assign(nv, 0.0);
+  }
+  for_each_old_edge(g, [&](std::uint32_t k, auto h, std::uint32_t a, std::uint32_t b, bool border) {
+    if (border && face(h, g) == boost::graph_traits<G>::null_face() &&
+        face(opposite(h, g), g) == boost::graph_traits<G>::null_face())
+      throw invalid_input("subdivision: edge " + std::to_string(k) + " has no face on either side (the mesh is unchanged)");
+    ++st.valence[a], ++st.valence[b];
+    if (border) {
+      if (st.border[a] != 255) ++st.border[a];
+      if (st.border[b] != 255) ++st.border[b];
+    } else if (!sharp.empty() && sharp[k] > 0) {
+      ++st.creases[a], ++st.creases[b];
+      st.crease_sharpness[a] += sharp[k], st.crease_sharpness[b] += sharp[k];
+    }
+  });
+  if (!corners.empty()) {
+    st.corner.assign(nv, 0);
+    for (std::uint32_t c : corners) st.corner[c] = 1;
+  }
+  return st;
+}
+
+/// Edge point weights: new = w_ends·(a + b) + w_wings·(wings); with creases
+/// the smooth rule is blended towards the midpoint by the sharpness.
+inline std::pair<double, double> edge_weights(double smooth_ends, double smooth_wings, bool border, double sharpness) {
+  if (border || sharpness >= 1) return {0.5, 0.0};
+  if (sharpness <= 0) return {smooth_ends, smooth_wings};
+  return {(1 - sharpness) * smooth_ends + sharpness * 0.5, (1 - sharpness) * smooth_wings};
+}
+
+/// Masks for the visitor: per old vertex its neighbours with the edge
+/// numbers (CSR), from the same edge pass as the rules.
+struct Neighbours {
+  std::vector<std::uint32_t> begin, vertex, edge;
+};
+template <class G>
+Neighbours neighbours(G& g, const Stars& st, const std::vector<std::uint32_t>& number) {
+  Neighbours n;
+  const std::size_t nv = st.valence.size();
+  n.begin.assign(nv + 1, 0);
+  for (std::size_t v = 0; v < nv; ++v) n.begin[v + 1] = n.begin[v] + st.valence[v];
+  n.vertex.resize(n.begin[nv]);
+  n.edge.resize(n.begin[nv]);
+  std::vector<std::uint32_t> ends(2 * number.size());
+  for_each_old_edge(g, [&](std::uint32_t k, auto, std::uint32_t a, std::uint32_t b, bool) {
+    ends[2 * number[k]] = a, ends[2 * number[k] + 1] = b;
+  });
+  std::vector<std::uint32_t> fill(n.begin.begin(), n.begin.end() - 1);
+  for (std::uint32_t k = 0; k < number.size(); ++k) { // in first-use order, as the sums
+    const std::uint32_t a = ends[2 * k], b = ends[2 * k + 1];
+    n.vertex[fill[a]] = b, n.edge[fill[a]++] = k;
+    n.vertex[fill[b]] = a, n.edge[fill[b]++] = k;
+  }
+  return n;
+}
+
+/// Emits the mask of old vertex v's rule (face points given by face_mask,
+/// which appends the corners of the faces around v with their weights).
+template <class G, class Border_edge, class Face_mask>
+void emit_vertex_mask(const Subdivision_visitor& vis, const Stars& st, const Neighbours& nb, const Vertex_rule& r,
+                      std::uint32_t v, const std::vector<double>& sharp, Border_edge is_border_edge,
+                      Face_mask face_mask, std::vector<std::uint32_t>& src, std::vector<double>& w) {
+  src.assign(1, v);
+  w.assign(1, r.self);
+  const bool border = st.is_border(v);
+  for (std::uint32_t i = nb.begin[v]; i < nb.begin[v + 1]; ++i) {
+    const std::uint32_t k = nb.edge[i];
+    if (r.ring != 0 && (!border || is_border_edge(k))) src.push_back(nb.vertex[i]), w.push_back(r.ring);
+    if (r.ends != 0 && !is_border_edge(k) && !sharp.empty() && sharp[k] > 0)
+      src.push_back(nb.vertex[i]), w.push_back(r.ends);
+  }
+  if (r.faces != 0) face_mask(v, r.faces, src, w);
+  vis.on_vertex(v, src, w);
+}
+
+/// The halves of old halfedges after split_edges(): an old halfedge x of old
+/// edge k is either halfedge(e_k) (now into the new vertex m_k = vertex nv + k)
+/// or its opposite (still into its old target); the other half is a
+/// halfedge of appended edge k.
+template <class G, class Ae>
+struct Halves {
+  const G& g;
+  const Ae& ae;
+  std::size_t nv;
+  struct Split {
+    halfedge_descriptor_t<G> first, second; ///< from the old source to m, from m to the old target
+    vertex_descriptor_t<G> m;
+  };
+  Split operator()(halfedge_descriptor_t<G> x) const {
+    auto vi = get(vertex_index, g);
+    const auto t = target(x, g);
+    const auto i = static_cast<std::size_t>(get(vi, t));
+    if (i >= nv) return {x, ae.halfedge(i - nv, 0), t};
+    const auto m = target(opposite(x, g), g);
+    return {ae.halfedge(static_cast<std::size_t>(get(vi, m)) - nv, 1), x, m};
+  }
+};
+
+/// Step 2: split every old edge k (the first ne edges of the dense g) at
+/// vertex av.vertex(i) = vertex nv + i, i = number[k] (its first use, see
+/// the schemes): halfedge(e) now ends at m, appended edge i takes the other half. Sets targets, halfedge(m), halfedge(old
+/// target), and links the border cycles; faces are linked by step 3, which
+/// still finds each old face's old cycle through next().
+template <class G, class Av, class Ae>
+void split_edges(G& g, const Av& av, const Ae& ae, std::size_t nv, std::size_t ne,
+                 const std::vector<std::uint32_t>& number) {
+  const auto null_face = boost::graph_traits<G>::null_face();
+  std::size_t k = 0;
+  bool border = false;
+  for (auto e : edges(g)) {
+    if (k == ne) break;
+    const std::uint32_t i = number[k];
+    const auto m = av.vertex(i);
+    const auto h = halfedge(e, g), o = opposite(h, g);
+    const auto b = target(h, g);
+    set_target(h, m, g);
+    set_target(ae.halfedge(i, 0), b, g);
+    set_target(ae.halfedge(i, 1), m, g);
+    if (halfedge(b, g) == h) set_halfedge(b, ae.halfedge(i, 0), g);
+    const bool fo = face(o, g) == null_face;
+    set_halfedge(m, fo ? ae.halfedge(i, 1) : h, g);
+    border = border || fo || face(h, g) == null_face;
+    ++k;
+  }
+  if (!border) return;
+  // border cycles: z → next(z) becomes first(z) → second(z) → first(next(z))
+  const Halves<G, Ae> halves{g, ae, nv};
+  k = 0;
+  for (auto e : edges(g)) {
+    if (k++ == ne) break;
+    const auto h = halfedge(e, g);
+    for (const auto z : {h, opposite(h, g)}) {
+      if (face(z, g) != null_face) continue;
+      const auto sz = halves(z), sw = halves(next(z, g));
+      set_face(sz.first, null_face, g);
+      set_face(sz.second, null_face, g);
+      set_next(sz.first, sz.second, g);
+      set_next(sz.second, sw.first, g);
+    }
+  }
+}
+
+/// Step 3 for Loop: the 1-to-4 cut of every old triangle j (the first nf
+/// faces): the corner triangles become appended faces 3j + t (t from the
+/// corner after the lowest vertex), the middle one
+/// stays face j; its inner edges are appended edges ne + 3j + t.
+template <class G, class Ae>
+void cut_triangles(G& g, const Ae& ae, std::size_t nv, std::size_t ne, std::size_t nf) {
+  const Halves<G, Ae> halves{g, ae, nv};
+  auto vi = get(vertex_index, g);
+  auto vnum = [&](auto v) { return static_cast<std::uint32_t>(get(vi, v)); };
+  std::size_t j = 0;
+  for (auto f : faces(g)) {
+    if (j == nf) break;
+    typename Halves<G, Ae>::Split x[3];
+    halfedge_descriptor_t<G> d[3], e[3];
+    const auto x0 = halfedge(f, g), x1 = next(x0, g), x2 = next(x1, g);
+    x[0] = halves(x0), x[1] = halves(x1), x[2] = halves(x2);
+    {
+      // canonical start: x[0] leaves the lowest old vertex (the target of x[2])
+      const std::uint32_t t0 = vnum(target(x[0].second, g)), t1 = vnum(target(x[1].second, g)),
+                          t2 = vnum(target(x[2].second, g));
+      if (t0 < t1 && t0 < t2) std::rotate(x, x + 1, x + 3);
+      else if (t1 < t0 && t1 < t2) std::rotate(x, x + 2, x + 3);
+    }
+    for (int t = 0; t < 3; ++t) {
+      d[t] = ae.halfedge(ne + 3 * j + t, 0);
+      e[t] = ae.halfedge(ne + 3 * j + t, 1);
+      set_target(d[t], x[t].m, g);
+      set_target(e[t], x[(t + 1) % 3].m, g);
+    }
+    for (int t = 0; t < 3; ++t) {
+      const auto ft = ae.face(3 * j + t);
+      const auto s = x[t].second, fn = x[(t + 1) % 3].first;
+      set_next(s, fn, g);
+      set_next(fn, d[t], g);
+      set_next(d[t], s, g);
+      set_face(s, ft, g);
+      set_face(fn, ft, g);
+      set_face(d[t], ft, g);
+      set_halfedge(ft, d[t], g);
+      set_next(e[t], e[(t + 1) % 3], g);
+      set_face(e[t], f, g);
+    }
+    set_halfedge(f, e[0], g);
+    ++j;
+  }
+}
+
+/// Step 3 for Catmull-Clark: every old n-gon j (the first nf faces) becomes n
+/// quads around its face point av.vertex(ne + j): quad t (at the old target
+/// of the face's t-th halfedge from its lowest vertex) is second_t, first_t+1,
+/// m_t+1 → c, c → m_t; quads 0..n−2 are appended faces, quad n−1 stays f;
+/// inner edge m_t – c is the next appended edge (face by face).
+template <class G, class Av, class Ae>
+void cut_polygons(G& g, const Av& av, const Ae& ae, std::size_t nv, std::size_t ne, std::size_t nf) {
+  using Split = typename Halves<G, Ae>::Split;
+  const Halves<G, Ae> halves{g, ae, nv};
+  auto vi = get(vertex_index, g);
+  std::vector<Split> xs;
+  std::vector<halfedge_descriptor_t<G>> hs;
+  std::size_t j = 0, inner = ne, new_faces = 0;
+  for (auto f : faces(g)) {
+    if (j == nf) break;
+    const auto c = av.vertex(ne + j);
+    canonical_cycle(g, f, hs, [&](auto x) { return static_cast<std::uint32_t>(get(vi, target(halves(x).second, g))); });
+    xs.clear();
+    for (const auto x : hs) xs.push_back(halves(x));
+    const std::size_t n = xs.size();
+    for (std::size_t t = 0; t < n; ++t) {
+      set_target(ae.halfedge(inner + t, 0), c, g);
+      set_target(ae.halfedge(inner + t, 1), xs[t].m, g);
+    }
+    for (std::size_t t = 0; t < n; ++t) {
+      const std::size_t u = (t + 1) % n;
+      const auto ft = t + 1 == n ? f : ae.face(new_faces + t);
+      const auto in = ae.halfedge(inner + u, 0), out = ae.halfedge(inner + t, 1);
+      set_next(xs[t].second, xs[u].first, g);
+      set_next(xs[u].first, in, g);
+      set_next(in, out, g);
+      set_next(out, xs[t].second, g);
+      for (const auto z : {xs[t].second, xs[u].first, in, out}) set_face(z, ft, g);
+      set_halfedge(ft, out, g);
+    }
+    set_halfedge(c, ae.halfedge(inner, 0), g);
+    inner += n;
+    new_faces += n - 1;
+    ++j;
+  }
+}
+
+/// Runs `iterations` levels of scheme on g: in place (level(g, i, sharp) on
+/// g) when g allows it, else on a Halfedge_mesh copy linked back into g.
+/// check(g) throws (g untouched) before anything changes; grow(counts) gives
+/// the counts after one level, to reserve the last level's size once.
+template <class G, class Check, class Level>
+Subdivision_result run_in_place(G& g, int iterations, const char* scheme, std::vector<double> sharp,
+                                const std::vector<std::uint32_t>& corners, Check check, Level level,
+                                std::array<std::size_t, 4> (*grow)(std::array<std::size_t, 4>)) {
+  if (iterations < 0) throw invalid_input(std::string(scheme) + ": iterations must be ≥ 0");
+  std::size_t nv = 0;
+  for (auto v : vertices(g)) (void)v, ++nv;
+  for (std::uint32_t c : corners)
+    if (c >= nv)
+      throw invalid_input(std::string(scheme) + ": corner vertex " + std::to_string(c) + " is out of range (" +
+                          std::to_string(nv) + " vertices)");
+  Subdivision_result r{0, nv, 0, {}};
+  if (iterations == 0) {
+    std::size_t ne = 0, nf = 0;
+    for (auto e : edges(g)) (void)e, ++ne;
+    for (auto f : faces(g)) (void)f, ++nf;
+    check_creases(sharp, ne, scheme);
+    r.faces = nf;
+    r.edge_sharpness = std::move(sharp);
+    return r;
+  }
+  if constexpr (In_place_refinable<G>) {
+    if (is_dense(g)) {
+      check_creases(sharp, index_bound(halfedge_index, g) / 2, scheme);
+      const std::array<std::size_t, 4> counts = check(g); // V, E, F, corners
+      std::array<std::size_t, 4> last = counts;
+      for (int i = 0; i < iterations; ++i) last = grow(last);
+      reserve(g, static_cast<typename boost::graph_traits<G>::vertices_size_type>(last[0]),
+              static_cast<typename boost::graph_traits<G>::edges_size_type>(last[1]),
+              static_cast<typename boost::graph_traits<G>::faces_size_type>(last[2]));
+      std::array<std::size_t, 4> now = counts;
+      for (int i = 0; i < iterations; ++i) {
+        level(g, i, now, sharp);
+        now = grow(now);
+        ++r.levels_done;
+      }
+      r.vertices = now[0];
+      r.faces = now[2];
+      r.edge_sharpness = std::move(sharp);
+      return r;
+    }
+  }
+  // The Halfedge_mesh copy: the snapshot numbers vertices, edges and faces in
+  // g's iteration order, and the copy is linked with these numbers.
+  Snapshot s = snapshot(g, scheme);
+  check_creases(sharp, s.num_edges(), scheme);
+  Halfedge_mesh<> copy;
+  {
+    Polygon_soup soup;
+    soup.points = s.points;
+    soup.offsets = s.face_begin;
+    soup.indices = s.corner_vertex;
+    std::vector<std::uint32_t> ce;
+    build_refined(soup, copy, s.corner_twin, &ce);
+    if (!sharp.empty()) {
+      std::vector<double> mine(s.num_edges(), 0.0);
+      for (std::size_t c = 0; c < ce.size(); ++c) mine[ce[c]] = sharp[s.corner_edge[c]];
+      sharp = std::move(mine);
+    }
+  }
+  s = Snapshot{};
+  const std::array<std::size_t, 4> counts = check(copy);
+  std::array<std::size_t, 4> last = counts;
+  for (int i = 0; i < iterations; ++i) last = grow(last);
+  copy.reserve(last[0], last[1], last[2]);
+  std::array<std::size_t, 4> now = counts;
+  for (int i = 0; i < iterations; ++i) {
+    level(copy, i, now, sharp);
+    now = grow(now);
+    ++r.levels_done;
+  }
+  // Back into g: faces in face order, each from next(halfedge(f)), twins by halfedge.
+  Polygon_soup out;
+  out.points.reserve(copy.n_vertices());
+  for (auto v : copy.vertices()) out.points.push_back(to_eigen(copy.point(v)));
+  std::vector<std::uint32_t> hc(copy.halfedges_size(), k_none), corner_h;
+  out.indices.reserve(copy.halfedges_size());
+  corner_h.reserve(copy.halfedges_size());
+  out.offsets.reserve(copy.n_faces() + 1);
+  std::vector<Halfedge_index> cycle;
+  for (auto f : copy.faces()) {
+    canonical_cycle(copy, f, cycle, [&](Halfedge_index x) { return copy.target(x).idx(); });
+    for (const Halfedge_index x : cycle) {
+      hc[x.idx()] = static_cast<std::uint32_t>(out.indices.size());
+      corner_h.push_back(x.idx());
+      out.indices.push_back(copy.source(x).idx());
+    }
+    out.offsets.push_back(static_cast<Polygon_soup::Index>(out.indices.size()));
+  }
+  std::vector<std::uint32_t> twin(out.indices.size());
+  for (std::size_t c = 0; c < twin.size(); ++c) twin[c] = hc[corner_h[c] ^ 1u];
+  copy = Halfedge_mesh<>();
+  std::vector<std::uint32_t> ce;
+  G fresh;
+  build_refined(out, fresh, std::move(twin), sharp.empty() ? nullptr : &ce);
+  g = std::move(fresh);
+  if (!sharp.empty()) {
+    std::vector<double> theirs(sharp.size(), 0.0);
+    for (std::size_t c = 0; c < ce.size(); ++c) theirs[ce[c]] = sharp[corner_h[c] / 2];
+    sharp = std::move(theirs);
+  }
+  r.vertices = now[0];
+  r.faces = now[2];
+  r.edge_sharpness = std::move(sharp);
+  return r;
+}
+
+} // namespace detail::subdivision
+} // namespace genmesh
