@@ -1,0 +1,1390 @@
+// genmesh/incidence_mesh.h — the sparse-incidence backend: Incidence_mesh<Point>.
+//
+// What it is: a polygon mesh stored as its two signed incidence matrices,
+//   d0 (E × V): row e holds −1 at the edge's source and +1 at its target;
+//   d1 (F × E): row f holds +1 at each edge f runs along, −1 at each edge it
+//               runs against;
+// plus the vertex positions. Both are Eigen sparse matrices, each kept twice
+// (row-major and its transpose row-major) so that every query reads rows
+// only. No next, prev, opposite or face array exists: a halfedge is
+// (edge, side), h = 2e + side, side 0 running along the edge (source →
+// target as in d0); opposite(h) = h ^ 1 and edge(h) = h / 2 are arithmetic,
+// and next, prev, face, target, halfedge(v), halfedge(f) are derived from the
+// matrices on each call, in O(local degree).
+//
+// Guarantees:
+// - It models HalfedgeGraph, HalfedgeListGraph, VertexListGraph,
+//   EdgeListGraph, FaceGraph and FaceListGraph (checked by static_asserts at
+//   the bottom), with genmesh's own index types as descriptors, so the
+//   numbering semantics are Halfedge_mesh's: element allocation is
+//   Halfedge_mesh's (= CGAL::Surface_mesh's): removal marks and pushes onto a
+//   LIFO free list per element kind, adding reuses the most recently freed
+//   index (recycling on), else appends; iteration by increasing index.
+// - build_mesh(soup, g) (through genmesh_native_link_soup) and every local
+//   operation (genmesh_native_<op> in <genmesh/detail/incidence_operations.h>)
+//   create and remove elements in the same order, with the same edge
+//   directions and returned descriptors, as on Halfedge_mesh: the same
+//   operation sequence gives the same to_soup() and the same edge numbering.
+// - Local edits cost O(local degree) amortized: rows live in Eigen's
+//   uncompressed storage with per-row slack; a row that outgrows its slot
+//   moves to the end of the buffer with twice the room, and the buffer is
+//   compacted when its abandoned slots exceed half of the live ones.
+// - It holds non-manifold input: from_soup()/load_soup() accept fins (edges
+//   in three or more faces), bow-tie vertices and inconsistently oriented
+//   neighbours; manifold_report() lists them by the fans-and-fins rule, and
+//   halfedge queries touching them throw genmesh::invalid_input naming the
+//   element.
+//
+// Limits:
+// - halfedge(v) and halfedge(f) are canonical, not remembered: halfedge(v)
+//   is v's incoming border halfedge if it has one, else the incoming halfedge
+//   of its lowest-numbered edge; halfedge(f) targets f's lowest-numbered
+//   vertex. Halfedge_mesh remembers whatever its last edit set, so generic
+//   code that starts at halfedge(v) or halfedge(f) (bevel_vertex,
+//   bevel_face, erase_vertex) numbers its new elements from another start.
+// - Not a MutableHalfedgeGraph (no set_next): generic code that edits
+//   pointers does not compile on it; the local operations are native.
+// - A face must not visit a vertex twice (the loaders refuse such faces; the
+//   native operations refuse where the generic ones would make one, and where
+//   they would pinch a vertex into two border gaps: see
+//   detail/incidence_operations.h).
+// - Walking a face cycle is O(d²) for a face of degree d (each next() scans
+//   the face's row); vertex circulation is O(d) per step for faces of
+//   degree d. Measured (benchmarks/bench_incidence.cpp): next() ~34× and
+//   circulation 33–66× slower than Halfedge_mesh, local operations 6–14×; 126 bytes per triangle
+//   against 66.
+// - Local operations need a manifold mesh; on a mesh loaded with
+//   non-manifold elements they refuse (predicates false, operations empty).
+// - No collect_garbage(): removed indices are recycled, never compacted.
+#pragma once
+
+#include <genmesh/concepts.h>
+#include <genmesh/exceptions.h>
+#include <genmesh/halfedge_mesh.h>
+#include <genmesh/point_traits.h>
+#include <genmesh/polygon_soup.h>
+#include <genmesh/property_maps.h>
+#include <genmesh/soup_to_mesh.h>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace genmesh {
+
+namespace detail {
+
+/// The rows of one signed sparse matrix, held in an
+/// Eigen::SparseMatrix<signed char, RowMajor, int> in uncompressed mode.
+/// Eigen reads row r as [outer[r], outer[r] + nnz[r]); this class owns the
+/// rest of the layout: each row has a slot of cap[r] entries starting at
+/// outer[r] (slots need not be in row order), entries of a row are sorted by
+/// column (so the matrix is a valid Eigen matrix for reading: iteration,
+/// products, coeff), a full row moves to the end of the buffer with doubled
+/// room, the buffer grows by doubling, and abandoned slots are compacted
+/// away once they exceed half of the live slots. Eigen's own insert() would shift
+/// every later row, O(non-zeros), which is why it is not used.
+class Incidence_rows {
+public:
+  using Matrix = Eigen::SparseMatrix<signed char, Eigen::RowMajor, int>;
+
+  Incidence_rows() { reset(); }
+  Incidence_rows(const Incidence_rows& o) : m_(o.m_) { relayout_after_copy(); }
+  // Eigen 3.4's SparseMatrix has no move constructor (a "move" would copy
+  // into compressed form): swap instead.
+  Incidence_rows(Incidence_rows&& o) noexcept : cap_(std::move(o.cap_)), tail_(o.tail_), garbage_(o.garbage_) {
+    m_.swap(o.m_);
+    o.reset();
+  }
+  Incidence_rows& operator=(const Incidence_rows& o) {
+    if (this != &o) {
+      m_ = o.m_;
+      relayout_after_copy();
+    }
+    return *this;
+  }
+  Incidence_rows& operator=(Incidence_rows&& o) noexcept {
+    if (this != &o) {
+      m_.swap(o.m_);
+      cap_.swap(o.cap_);
+      std::swap(tail_, o.tail_);
+      std::swap(garbage_, o.garbage_);
+      o.reset();
+    }
+    return *this;
+  }
+  ~Incidence_rows() = default;
+
+  /// Back to no rows and an empty buffer.
+  void reset() {
+    m_ = Matrix(1, 1);
+    m_.uncompress();
+    m_.innerNonZeroPtr()[0] = 0;
+    m_.outerIndexPtr()[0] = 0;
+    cap_.assign(1, 0);
+    tail_ = 0;
+    garbage_ = 0;
+    m_.data().resize(0);
+  }
+
+  /// Room for rows [0, rows) and columns [0, cols) (doubling).
+  void reserve_shape(std::size_t rows, std::size_t cols) {
+    const auto r0 = static_cast<std::size_t>(m_.rows()), c0 = static_cast<std::size_t>(m_.cols());
+    if (rows <= r0 && cols <= c0) return;
+    const std::size_t r = rows <= r0 ? r0 : std::max(rows, 2 * r0);
+    const std::size_t c = cols <= c0 ? c0 : std::max(cols, 2 * c0);
+    m_.conservativeResize(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c));
+    cap_.resize(r, 0);
+  }
+  /// Room for `extra` more entries in the buffer.
+  void reserve_entries(std::size_t entries) {
+    if (static_cast<std::size_t>(m_.data().allocatedSize()) < entries) {
+      const auto used = m_.data().size();
+      m_.data().resize(static_cast<Eigen::Index>(entries));
+      m_.data().resize(used);
+    }
+  }
+
+  [[nodiscard]] int size(std::uint32_t r) const { return m_.innerNonZeroPtr()[r]; }
+  [[nodiscard]] const int* cols(std::uint32_t r) const { return m_.innerIndexPtr() + m_.outerIndexPtr()[r]; }
+  [[nodiscard]] const signed char* vals(std::uint32_t r) const { return m_.valuePtr() + m_.outerIndexPtr()[r]; }
+  [[nodiscard]] std::span<const int> row_cols(std::uint32_t r) const {
+    return {cols(r), static_cast<std::size_t>(size(r))};
+  }
+
+  /// The value at (r, c), 0 if absent.
+  [[nodiscard]] signed char at(std::uint32_t r, int c) const {
+    const int n = size(r);
+    const int* cs = cols(r);
+    for (int k = 0; k < n; ++k)
+      if (cs[k] == c) return vals(r)[k];
+    return 0;
+  }
+
+  /// Makes sure row r has a slot of at least n entries (moves it if not).
+  void ensure_room(std::uint32_t r, int n) {
+    if (cap_[r] >= n) return;
+    relocate(r, std::max(n, 2 * cap_[r]));
+  }
+
+  /// Sets (r, c) to v (inserted in column order if absent).
+  void set(std::uint32_t r, int c, signed char v) {
+    int n = size(r);
+    int* cs = m_.innerIndexPtr() + m_.outerIndexPtr()[r];
+    signed char* vs = m_.valuePtr() + m_.outerIndexPtr()[r];
+    int k = 0;
+    while (k < n && cs[k] < c) ++k;
+    if (k < n && cs[k] == c) {
+      vs[k] = v;
+      return;
+    }
+    if (n == cap_[r]) {
+      relocate(r, std::max(2, 2 * n));
+      cs = m_.innerIndexPtr() + m_.outerIndexPtr()[r];
+      vs = m_.valuePtr() + m_.outerIndexPtr()[r];
+    }
+    for (int j = n; j > k; --j) {
+      cs[j] = cs[j - 1];
+      vs[j] = vs[j - 1];
+    }
+    cs[k] = c;
+    vs[k] = v;
+    m_.innerNonZeroPtr()[r] = n + 1;
+  }
+  /// Removes (r, c) if present.
+  void erase(std::uint32_t r, int c) {
+    const int n = size(r);
+    int* cs = m_.innerIndexPtr() + m_.outerIndexPtr()[r];
+    signed char* vs = m_.valuePtr() + m_.outerIndexPtr()[r];
+    int k = 0;
+    while (k < n && cs[k] != c) ++k;
+    if (k == n) return;
+    for (int j = k + 1; j < n; ++j) {
+      cs[j - 1] = cs[j];
+      vs[j - 1] = vs[j];
+    }
+    m_.innerNonZeroPtr()[r] = n - 1;
+  }
+  void clear_row(std::uint32_t r) { m_.innerNonZeroPtr()[r] = 0; }
+
+  /// Replaces the whole layout by rows given in compressed form (begin has
+  /// rows + 1 offsets into cols/vals, each row sorted by column). Slots are
+  /// exactly as large as the rows.
+  void assign(std::size_t rows, std::size_t ncols, const std::vector<std::uint32_t>& begin,
+              const std::vector<int>& cols, const std::vector<signed char>& vals) {
+    reset();
+    reserve_shape(std::max<std::size_t>(rows, 1), std::max<std::size_t>(ncols, 1));
+    const std::size_t nnz = cols.size();
+    m_.data().resize(static_cast<Eigen::Index>(nnz));
+    std::copy(cols.begin(), cols.end(), m_.innerIndexPtr());
+    std::copy(vals.begin(), vals.end(), m_.valuePtr());
+    for (std::size_t r = 0; r < rows; ++r) {
+      m_.outerIndexPtr()[r] = static_cast<int>(begin[r]);
+      m_.innerNonZeroPtr()[r] = static_cast<int>(begin[r + 1] - begin[r]);
+      cap_[r] = m_.innerNonZeroPtr()[r];
+    }
+    for (std::size_t r = rows; r < cap_.size(); ++r) {
+      m_.outerIndexPtr()[r] = static_cast<int>(nnz);
+      m_.innerNonZeroPtr()[r] = 0;
+      cap_[r] = 0;
+    }
+    tail_ = nnz;
+  }
+
+  /// A compressed copy of rows [0, rows) × columns [0, cols) as ints.
+  [[nodiscard]] Eigen::SparseMatrix<int, Eigen::RowMajor> compressed(std::size_t rows, std::size_t ncols) const {
+    Eigen::SparseMatrix<int, Eigen::RowMajor> out(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(ncols));
+    std::size_t nnz = 0;
+    for (std::size_t r = 0; r < rows; ++r) nnz += static_cast<std::size_t>(size(static_cast<std::uint32_t>(r)));
+    out.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+    int k = 0;
+    for (std::size_t r = 0; r < rows; ++r) {
+      out.outerIndexPtr()[r] = k;
+      const auto rr = static_cast<std::uint32_t>(r);
+      for (int j = 0; j < size(rr); ++j, ++k) {
+        out.innerIndexPtr()[k] = cols(rr)[j];
+        out.valuePtr()[k] = vals(rr)[j];
+      }
+    }
+    out.outerIndexPtr()[rows] = k;
+    return out;
+  }
+
+  /// How many times abandoned slots were compacted away (for tests).
+  [[nodiscard]] std::size_t compactions() const { return compactions_; }
+
+  /// The Eigen matrix as stored (uncompressed; rows and columns are capacities).
+  [[nodiscard]] const Matrix& matrix() const { return m_; }
+
+  /// Bytes held: the entry buffer (4-byte column + 1-byte value per entry
+  /// allocated), the outer index, non-zero counts and slot capacities.
+  [[nodiscard]] std::size_t memory_bytes() const {
+    return static_cast<std::size_t>(m_.data().allocatedSize()) * (sizeof(int) + sizeof(signed char)) +
+           static_cast<std::size_t>(m_.rows()) * (2 * sizeof(int)) + sizeof(int) + cap_.capacity() * sizeof(int);
+  }
+
+private:
+  // Moves row r to a new slot of `room` entries at the end of the buffer.
+  void relocate(std::uint32_t r, int room) {
+    // Abandoned slots are at most the live slots' size (each row doubles), so
+    // compact when they pass half of it: the buffer stays below 1.5× the live
+    // slots, and each compaction is paid for by the insertions that grew rows.
+    if (garbage_ > 1024 && 2 * garbage_ > tail_ - garbage_) compact();
+    const int n = size(r);
+    const std::size_t start = tail_;
+    const std::size_t need = start + static_cast<std::size_t>(room);
+    if (static_cast<std::size_t>(m_.data().allocatedSize()) < need)
+      m_.data().resize(static_cast<Eigen::Index>(need), 1.0); // doubling
+    else
+      m_.data().resize(static_cast<Eigen::Index>(need));
+    const int old = m_.outerIndexPtr()[r];
+    std::copy_n(m_.innerIndexPtr() + old, n, m_.innerIndexPtr() + start);
+    std::copy_n(m_.valuePtr() + old, n, m_.valuePtr() + start);
+    garbage_ += static_cast<std::size_t>(cap_[r]);
+    m_.outerIndexPtr()[r] = static_cast<int>(start);
+    cap_[r] = room;
+    tail_ = need;
+  }
+
+  // Lays every slot out again in row order, dropping abandoned slots.
+  void compact() {
+    const std::size_t rows = cap_.size();
+    std::vector<int> ci;
+    std::vector<signed char> cv;
+    ci.reserve(tail_ - garbage_);
+    cv.reserve(tail_ - garbage_);
+    std::vector<int> start(rows);
+    for (std::size_t r = 0; r < rows; ++r) {
+      const auto rr = static_cast<std::uint32_t>(r);
+      start[r] = static_cast<int>(ci.size());
+      ci.insert(ci.end(), cols(rr), cols(rr) + size(rr));
+      cv.insert(cv.end(), vals(rr), vals(rr) + size(rr));
+      ci.resize(ci.size() + static_cast<std::size_t>(cap_[r] - size(rr)), 0);
+      cv.resize(cv.size() + static_cast<std::size_t>(cap_[r] - size(rr)), 0);
+    }
+    std::copy(ci.begin(), ci.end(), m_.innerIndexPtr());
+    std::copy(cv.begin(), cv.end(), m_.valuePtr());
+    for (std::size_t r = 0; r < rows; ++r) m_.outerIndexPtr()[r] = start[r];
+    tail_ = ci.size();
+    garbage_ = 0;
+    ++compactions_;
+    m_.data().resize(static_cast<Eigen::Index>(tail_));
+  }
+
+  // Eigen's copy assignment gives a compressed matrix laid out in row order.
+  void relayout_after_copy() {
+    if (m_.isCompressed()) m_.uncompress();
+    cap_.assign(static_cast<std::size_t>(m_.rows()), 0);
+    for (Eigen::Index r = 0; r < m_.rows(); ++r) cap_[static_cast<std::size_t>(r)] = m_.innerNonZeroPtr()[r];
+    tail_ = static_cast<std::size_t>(m_.data().size());
+    garbage_ = 0;
+  }
+
+  Matrix m_;
+  std::vector<int> cap_;
+  std::size_t tail_ = 0;    // first free entry of the buffer
+  std::size_t garbage_ = 0; // entries in abandoned slots
+  std::size_t compactions_ = 0;
+};
+
+} // namespace detail
+
+/// The vertex point map of an Incidence_mesh (a boost lvalue property map).
+template <class P>
+struct Incidence_point_map {
+  using key_type = Vertex_index;
+  using value_type = P;
+  using reference = P&;
+  using category = boost::lvalue_property_map_tag;
+  std::vector<P>* points = nullptr;
+  P& operator[](Vertex_index v) const { return (*points)[v.idx()]; }
+  friend P& get(const Incidence_point_map& m, Vertex_index v) { return m[v]; }
+  friend void put(const Incidence_point_map& m, Vertex_index v, const P& p) { m[v] = p; }
+};
+
+/// What is not a 2-manifold in an Incidence_mesh, by the fans-and-fins rule:
+/// an edge is manifold when it bounds at most two faces, running it in
+/// opposite directions; a vertex when its faces form one fan (they are
+/// connected through the edges at the vertex). Elements are listed by
+/// increasing index.
+struct Incidence_manifold_report {
+  std::vector<Edge_index> fin_edges;            ///< edges in three or more faces
+  std::vector<Edge_index> misoriented_edges;    ///< edges whose two faces run the same way along them
+  std::vector<Vertex_index> non_manifold_vertices; ///< vertices whose faces form several fans (bow-ties)
+  [[nodiscard]] bool ok() const {
+    return fin_edges.empty() && misoriented_edges.empty() && non_manifold_vertices.empty();
+  }
+};
+
+/// One line per problem kind, naming the elements.
+inline std::string to_string(const Incidence_manifold_report& r) {
+  std::string s;
+  auto list = [&](const char* what, const auto& v) {
+    if (v.empty()) return;
+    s += what;
+    for (const auto& x : v) s += ' ' + std::to_string(x.idx());
+    s += '\n';
+  };
+  list("edges in three or more faces:", r.fin_edges);
+  list("edges whose two faces run the same way:", r.misoriented_edges);
+  list("vertices whose faces form several fans:", r.non_manifold_vertices);
+  return s.empty() ? "manifold\n" : s;
+}
+
+/// genmesh's sparse-incidence mesh; see the top of this header.
+template <class P = Eigen::Vector3d>
+class Incidence_mesh {
+public:
+  using Point = P;
+  using size_type = std::size_t;
+
+  static constexpr Vertex_index null_vertex() { return {}; }
+  static constexpr Halfedge_index null_halfedge() { return {}; }
+  static constexpr Edge_index null_edge() { return {}; }
+  static constexpr Face_index null_face() { return {}; }
+
+  Incidence_mesh() = default;
+
+  /// Loads any soup of polygons with distinct corners, manifold or not (see
+  /// load_soup()).
+  [[nodiscard]] static Incidence_mesh from_soup(const Polygon_soup& soup) {
+    Incidence_mesh m;
+    m.load_soup(soup);
+    return m;
+  }
+
+  /// Replaces the mesh by soup: point i is vertex i, face j is face j, edges
+  /// are numbered in the order of their first use (face by face, corner by
+  /// corner) and directed as that first use, as build_mesh() numbers them.
+  /// Fins, bow-ties and inconsistent orientation are accepted (see
+  /// manifold_report()). Throws invalid_input, leaving the mesh unchanged,
+  /// for a face with fewer than three corners, a repeated corner or a point
+  /// index out of range.
+  void load_soup(const Polygon_soup& soup) {
+    const std::size_t np = soup.num_points(), nf = soup.num_faces();
+    for (std::size_t f = 0; f < nf; ++f) {
+      const auto c = soup.face(f);
+      if (c.size() < 3) throw invalid_input("Incidence_mesh::load_soup: face " + std::to_string(f) + " has fewer than three corners");
+      for (std::size_t i = 0; i < c.size(); ++i) {
+        if (c[i] >= np)
+          throw invalid_input("Incidence_mesh::load_soup: face " + std::to_string(f) + " uses point " +
+                              std::to_string(c[i]) + ", out of range");
+        for (std::size_t j = 0; j < i; ++j)
+          if (c[i] == c[j])
+            throw invalid_input("Incidence_mesh::load_soup: face " + std::to_string(f) + " visits point " +
+                                std::to_string(c[i]) + " twice");
+      }
+    }
+    std::unordered_map<std::uint64_t, std::uint32_t> edge_of;
+    edge_of.reserve(soup.indices.size());
+    std::vector<std::uint32_t> corner_edge(soup.indices.size());
+    std::vector<signed char> corner_sign(soup.indices.size());
+    std::vector<std::uint32_t> ends; // source, target per edge
+    for (std::size_t f = 0; f < nf; ++f) {
+      const std::uint32_t b = soup.offsets[f], e = soup.offsets[f + 1];
+      for (std::uint32_t c = b; c < e; ++c) {
+        const std::uint32_t u = soup.indices[c], v = soup.indices[c + 1 == e ? b : c + 1];
+        const std::uint64_t key = (std::uint64_t(std::min(u, v)) << 32) | std::max(u, v);
+        auto [it, fresh] = edge_of.try_emplace(key, static_cast<std::uint32_t>(ends.size() / 2));
+        if (fresh) {
+          ends.push_back(u);
+          ends.push_back(v);
+        }
+        corner_edge[c] = it->second;
+        corner_sign[c] = ends[2 * it->second] == u ? 1 : -1;
+      }
+    }
+    assign_incidences(soup.points, ends, soup.offsets, corner_edge, corner_sign);
+    update_manifold_flags_();
+  }
+
+  // ---- counts -------------------------------------------------------------
+
+  /// Live (not removed) elements.
+  [[nodiscard]] size_type n_vertices() const { return vremoved_.size() - removed_vertices_; }
+  [[nodiscard]] size_type n_halfedges() const { return 2 * n_edges(); }
+  [[nodiscard]] size_type n_edges() const { return eremoved_.size() - removed_edges_; }
+  [[nodiscard]] size_type n_faces() const { return fremoved_.size() - removed_faces_; }
+  [[nodiscard]] bool is_empty() const { return n_vertices() == 0; }
+  /// Index bounds: live plus removed elements.
+  [[nodiscard]] size_type vertices_size() const { return vremoved_.size(); }
+  [[nodiscard]] size_type halfedges_size() const { return 2 * eremoved_.size(); }
+  [[nodiscard]] size_type edges_size() const { return eremoved_.size(); }
+  [[nodiscard]] size_type faces_size() const { return fremoved_.size(); }
+
+  [[nodiscard]] bool is_removed(Vertex_index v) const { return vremoved_[v.idx()]; }
+  [[nodiscard]] bool is_removed(Halfedge_index h) const { return eremoved_[h.idx() >> 1]; }
+  [[nodiscard]] bool is_removed(Edge_index e) const { return eremoved_[e.idx()]; }
+  [[nodiscard]] bool is_removed(Face_index f) const { return fremoved_[f.idx()]; }
+  /// Within bounds and not removed.
+  [[nodiscard]] bool is_valid(Vertex_index v) const { return v.idx() < vertices_size() && !is_removed(v); }
+  [[nodiscard]] bool is_valid(Halfedge_index h) const { return h.idx() < halfedges_size() && !is_removed(h); }
+  [[nodiscard]] bool is_valid(Edge_index e) const { return e.idx() < edges_size() && !is_removed(e); }
+  [[nodiscard]] bool is_valid(Face_index f) const { return f.idx() < faces_size() && !is_removed(f); }
+
+  // ---- the matrices ---------------------------------------------------------
+
+  /// d0, E × V with E and V the index bounds (removed elements give empty
+  /// rows and columns): −1 at each edge's source, +1 at its target. A
+  /// compressed copy.
+  [[nodiscard]] Eigen::SparseMatrix<int> d0() const {
+    return Eigen::SparseMatrix<int>(d0_.compressed(edges_size(), vertices_size()));
+  }
+  /// d1, F × E: +1 where the face runs along the edge, −1 against. A
+  /// compressed copy.
+  [[nodiscard]] Eigen::SparseMatrix<int> d1() const {
+    return Eigen::SparseMatrix<int>(d1_.compressed(faces_size(), edges_size()));
+  }
+  /// The stored rows (uncompressed Eigen storage with slack; rows and
+  /// columns beyond the index bounds are capacity). For reading.
+  [[nodiscard]] const detail::Incidence_rows& d0_rows() const { return d0_; }
+  [[nodiscard]] const detail::Incidence_rows& d0t_rows() const { return d0t_; }
+  [[nodiscard]] const detail::Incidence_rows& d1_rows() const { return d1_; }
+  [[nodiscard]] const detail::Incidence_rows& d1t_rows() const { return d1t_; }
+
+  // ---- connectivity -------------------------------------------------------
+
+  [[nodiscard]] static constexpr Halfedge_index opposite(Halfedge_index h) { return Halfedge_index(h.idx() ^ 1u); }
+  [[nodiscard]] static constexpr Edge_index edge(Halfedge_index h) { return Edge_index(h); }
+  [[nodiscard]] static constexpr Halfedge_index halfedge(Edge_index e) { return e.halfedge(); }
+  [[nodiscard]] static constexpr Halfedge_index halfedge(Edge_index e, unsigned i) {
+    return Halfedge_index((e.idx() << 1) + i);
+  }
+
+  /// The vertex h points to (d0's +1 for side 0, −1 for side 1); null for an
+  /// edge whose ends are not set.
+  [[nodiscard]] Vertex_index target(Halfedge_index h) const {
+    const std::uint32_t e = h.idx() >> 1;
+    const signed char want = (h.idx() & 1u) ? -1 : 1;
+    const int n = d0_.size(e);
+    const int* c = d0_.cols(e);
+    const signed char* s = d0_.vals(e);
+    for (int k = 0; k < n; ++k)
+      if (s[k] == want) return Vertex_index(static_cast<std::uint32_t>(c[k]));
+    return {};
+  }
+  [[nodiscard]] Vertex_index source(Halfedge_index h) const { return target(opposite(h)); }
+
+  /// The face on h's side (d1ᵀ row of edge(h) with h's sign), null on the
+  /// border. Throws invalid_input on an edge that is not manifold.
+  [[nodiscard]] Face_index face(Halfedge_index h) const {
+    const std::uint32_t e = h.idx() >> 1;
+    if (!manifold_ && bad_edge_[e]) throw_edge_(e, "face");
+    const signed char want = (h.idx() & 1u) ? -1 : 1;
+    const int n = d1t_.size(e);
+    const int* c = d1t_.cols(e);
+    const signed char* s = d1t_.vals(e);
+    for (int k = 0; k < n; ++k)
+      if (s[k] == want) return Face_index(static_cast<std::uint32_t>(c[k]));
+    return {};
+  }
+
+  /// The halfedge after h in its face (the one of face(h) leaving target(h)),
+  /// or, on the border, the border halfedge leaving target(h). Inside a face:
+  /// the edge other than edge(h) in both f's d1 row and target(h)'s d0ᵀ row
+  /// (a merge of two short sorted rows), directed by its sign in f.
+  [[nodiscard]] Halfedge_index next(Halfedge_index h) const {
+    const Face_index f = face(h);
+    const Vertex_index t = target(h);
+    if (f.is_valid()) return side_at_(f, t, h);
+    return border_leaving_(t, h);
+  }
+
+  /// The halfedge before h in its face, or on the border the border halfedge
+  /// entering source(h).
+  [[nodiscard]] Halfedge_index prev(Halfedge_index h) const {
+    const Face_index f = face(h);
+    const Vertex_index s0 = source(h);
+    if (f.is_valid()) return side_at_(f, s0, h);
+    return border_entering_(s0, h);
+  }
+
+  /// A halfedge targeting v: its incoming border halfedge if v is on the
+  /// border, else the incoming halfedge of its lowest-numbered edge; null if
+  /// v is isolated. Throws invalid_input on a non-manifold vertex.
+  [[nodiscard]] Halfedge_index halfedge(Vertex_index v) const {
+    if (!manifold_ && bad_vertex_[v.idx()]) throw_vertex_(v.idx(), "halfedge");
+    const int n = d0t_.size(v.idx());
+    if (n == 0) return {};
+    const int* c = d0t_.cols(v.idx());
+    const signed char* s = d0t_.vals(v.idx());
+    for (int k = 0; k < n; ++k) {
+      if (d1t_.size(static_cast<std::uint32_t>(c[k])) == 2) continue; // faces on both sides
+      const Halfedge_index in(2u * static_cast<std::uint32_t>(c[k]) + (s[k] > 0 ? 0u : 1u));
+      if (!face(in).is_valid()) return in;
+    }
+    return Halfedge_index(2u * static_cast<std::uint32_t>(c[0]) + (s[0] > 0 ? 0u : 1u));
+  }
+  /// The halfedge of f targeting f's lowest-numbered vertex (null for a face
+  /// with no side).
+  [[nodiscard]] Halfedge_index halfedge(Face_index f) const {
+    const int n = d1_.size(f.idx());
+    const int* c = d1_.cols(f.idx());
+    const signed char* s = d1_.vals(f.idx());
+    Halfedge_index best;
+    Vertex_index low;
+    for (int k = 0; k < n; ++k) {
+      const Halfedge_index x(2u * static_cast<std::uint32_t>(c[k]) + (s[k] > 0 ? 0u : 1u));
+      const Vertex_index t = target(x);
+      if (!best.is_valid() || t < low) {
+        best = x;
+        low = t;
+      }
+    }
+    return best;
+  }
+  /// The halfedge from u to v, or null.
+  [[nodiscard]] Halfedge_index halfedge(Vertex_index u, Vertex_index v) const {
+    const int n = d0t_.size(v.idx());
+    const int* c = d0t_.cols(v.idx());
+    const signed char* s = d0t_.vals(v.idx());
+    for (int k = 0; k < n; ++k) {
+      const Halfedge_index in(2u * static_cast<std::uint32_t>(c[k]) + (s[k] > 0 ? 0u : 1u));
+      if (source(in) == u) return in;
+    }
+    return {};
+  }
+
+  /// Number of edges at v (a d0ᵀ row length): O(1).
+  [[nodiscard]] size_type degree(Vertex_index v) const { return static_cast<size_type>(d0t_.size(v.idx())); }
+  /// Number of sides of f (a d1 row length): O(1).
+  [[nodiscard]] size_type degree(Face_index f) const { return static_cast<size_type>(d1_.size(f.idx())); }
+  /// face(h) is null.
+  [[nodiscard]] bool is_border(Halfedge_index h) const { return !face(h).is_valid(); }
+  /// Fewer than two faces at e.
+  [[nodiscard]] bool is_border(Edge_index e) const { return d1t_.size(e.idx()) < 2; }
+  /// v is isolated or has an incoming border halfedge.
+  [[nodiscard]] bool is_border(Vertex_index v) const {
+    const Halfedge_index h = halfedge(v);
+    return !h.is_valid() || is_border(h);
+  }
+  [[nodiscard]] bool is_isolated(Vertex_index v) const { return d0t_.size(v.idx()) == 0; }
+
+  // ---- manifoldness -------------------------------------------------------
+
+  /// No fin, no misoriented edge, no vertex with several fans.
+  [[nodiscard]] bool is_manifold() const { return manifold_; }
+  /// The offending elements (see Incidence_manifold_report). O(mesh).
+  [[nodiscard]] Incidence_manifold_report manifold_report() const {
+    Incidence_manifold_report r;
+    for (std::uint32_t e = 0; e < edges_size(); ++e) {
+      if (eremoved_[e]) continue;
+      const int n = d1t_.size(e);
+      if (n > 2) r.fin_edges.emplace_back(e);
+      else if (n == 2 && d1t_.vals(e)[0] == d1t_.vals(e)[1]) r.misoriented_edges.emplace_back(e);
+    }
+    for (std::uint32_t v = 0; v < vertices_size(); ++v)
+      if (!vremoved_[v] && fans_(v) > 1) r.non_manifold_vertices.emplace_back(v);
+    return r;
+  }
+  /// The vertices of face f in order (following its signed edges), valid on
+  /// any face, manifold or not.
+  [[nodiscard]] std::vector<Vertex_index> face_vertices(Face_index f) const {
+    std::vector<Vertex_index> out;
+    const int n = d1_.size(f.idx());
+    if (n == 0) return out;
+    const int* c = d1_.cols(f.idx());
+    const signed char* s = d1_.vals(f.idx());
+    auto from = [&](int k) {
+      return source(Halfedge_index(2u * static_cast<std::uint32_t>(c[k]) + (s[k] > 0 ? 0u : 1u)));
+    };
+    auto to = [&](int k) {
+      return target(Halfedge_index(2u * static_cast<std::uint32_t>(c[k]) + (s[k] > 0 ? 0u : 1u)));
+    };
+    // Start at the side leaving the lowest vertex, as halfedge(f) does.
+    int k = 0;
+    for (int j = 1; j < n; ++j)
+      if (to(j) < to(k)) k = j;
+    for (int step = 0; step < n; ++step) {
+      out.push_back(to(k));
+      int nk = -1;
+      for (int j = 0; j < n; ++j)
+        if (from(j) == to(k)) nk = j;
+      if (nk < 0) throw invalid_input("Incidence_mesh: face " + std::to_string(f.idx()) + " is not a closed cycle");
+      k = nk;
+    }
+    return out;
+  }
+  /// The polygon soup of the mesh read from d1 directly (vertices and faces
+  /// in index order, each face rotated to its lowest vertex): works on
+  /// non-manifold meshes too; build_mesh(polygon_soup(), halfedge_mesh)
+  /// then refuses or repairs as for any soup.
+  [[nodiscard]] Polygon_soup polygon_soup() const {
+    Polygon_soup s;
+    std::vector<std::uint32_t> num(vertices_size(), 0);
+    for (std::uint32_t v = 0; v < vertices_size(); ++v)
+      if (!vremoved_[v]) {
+        num[v] = static_cast<std::uint32_t>(s.points.size());
+        s.points.push_back(to_eigen(points_[v]));
+      }
+    std::vector<std::uint32_t> c;
+    for (std::uint32_t f = 0; f < faces_size(); ++f) {
+      if (fremoved_[f]) continue;
+      c.clear();
+      for (const auto v : face_vertices(Face_index(f))) c.push_back(num[v.idx()]);
+      std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+      s.add_face(c);
+    }
+    return s;
+  }
+
+  // ---- adding and removing ------------------------------------------------
+
+  /// A new isolated vertex (recycled if possible), at the default point.
+  Vertex_index add_vertex() { return add_vertex(detail::default_point<P>()); }
+  Vertex_index add_vertex(const Point& p) {
+    if (recycle_ && !vfree_.empty()) {
+      const std::uint32_t i = vfree_.back();
+      vfree_.pop_back();
+      --removed_vertices_;
+      vremoved_[i] = false;
+      points_[i] = p;
+      d0t_.clear_row(i);
+      return Vertex_index(i);
+    }
+    const auto i = static_cast<std::uint32_t>(vremoved_.size());
+    check_room_(i);
+    vremoved_.push_back(false);
+    points_.push_back(p);
+    d0t_.reserve_shape(i + 1, 1);
+    d0_.reserve_shape(1, i + 1);
+    if (!manifold_) bad_vertex_.push_back(false);
+    return Vertex_index(i);
+  }
+  /// A new edge (recycled if possible) with no ends yet (set them with
+  /// set_edge_vertices()).
+  Edge_index add_edge() { return allocate_edge_(); }
+  /// A new edge (recycled if possible) from u to v: halfedge(e, 0) goes
+  /// u → v. u and v must be distinct live vertices.
+  Edge_index add_edge(Vertex_index u, Vertex_index v) {
+    const Edge_index e = allocate_edge_();
+    set_edge_vertices(e, u, v);
+    return e;
+  }
+  /// A new face (recycled if possible) with no side; add_side() gives it sides.
+  Face_index add_face() {
+    if (recycle_ && !ffree_.empty()) {
+      const std::uint32_t i = ffree_.back();
+      ffree_.pop_back();
+      --removed_faces_;
+      fremoved_[i] = false;
+      d1_.clear_row(i);
+      return Face_index(i);
+    }
+    const auto i = static_cast<std::uint32_t>(fremoved_.size());
+    check_room_(i);
+    fremoved_.push_back(false);
+    d1_.reserve_shape(i + 1, 1);
+    d1t_.reserve_shape(1, i + 1);
+    return Face_index(i);
+  }
+  /// Marks v removed and frees its index; its remaining incidences are dropped.
+  void remove_vertex(Vertex_index v) {
+    const std::uint32_t i = v.idx();
+    for (int k = 0; k < d0t_.size(i); ++k) d0_.erase(static_cast<std::uint32_t>(d0t_.cols(i)[k]), static_cast<int>(i));
+    d0t_.clear_row(i);
+    vremoved_[i] = true;
+    ++removed_vertices_;
+    garbage_ = true;
+    vfree_.push_back(i);
+  }
+  /// Marks e removed and frees its index; drops its incidences (its ends'
+  /// and faces' rows lose it).
+  void remove_edge(Edge_index e) {
+    const std::uint32_t i = e.idx();
+    for (int k = 0; k < d0_.size(i); ++k) d0t_.erase(static_cast<std::uint32_t>(d0_.cols(i)[k]), static_cast<int>(i));
+    for (int k = 0; k < d1t_.size(i); ++k) d1_.erase(static_cast<std::uint32_t>(d1t_.cols(i)[k]), static_cast<int>(i));
+    d0_.clear_row(i);
+    d1t_.clear_row(i);
+    eremoved_[i] = true;
+    ++removed_edges_;
+    garbage_ = true;
+    efree_.push_back(i);
+  }
+  /// Marks f removed and frees its index; its sides become border.
+  void remove_face(Face_index f) {
+    const std::uint32_t i = f.idx();
+    for (int k = 0; k < d1_.size(i); ++k) d1t_.erase(static_cast<std::uint32_t>(d1_.cols(i)[k]), static_cast<int>(i));
+    d1_.clear_row(i);
+    fremoved_[i] = true;
+    ++removed_faces_;
+    garbage_ = true;
+    ffree_.push_back(i);
+  }
+
+  // ---- low-level incidence edits (keep nothing else consistent) -----------
+
+  /// Edge e now goes from u to v (halfedge(e, 0) targets v).
+  void set_edge_vertices(Edge_index e, Vertex_index u, Vertex_index v) {
+    const std::uint32_t i = e.idx();
+    for (int k = 0; k < d0_.size(i); ++k) d0t_.erase(static_cast<std::uint32_t>(d0_.cols(i)[k]), static_cast<int>(i));
+    d0_.clear_row(i);
+    d0_.ensure_room(i, 2);
+    d0_.set(i, static_cast<int>(u.idx()), -1);
+    d0_.set(i, static_cast<int>(v.idx()), 1);
+    d0t_.set(u.idx(), static_cast<int>(i), -1);
+    d0t_.set(v.idx(), static_cast<int>(i), 1);
+  }
+  /// h now goes from u to v.
+  void set_halfedge_vertices(Halfedge_index h, Vertex_index u, Vertex_index v) {
+    if (h.idx() & 1u) set_edge_vertices(edge(h), v, u);
+    else set_edge_vertices(edge(h), u, v);
+  }
+  /// Every incidence of vertex `from` moves to `to` (edge directions kept).
+  void move_incidences(Vertex_index from, Vertex_index to) {
+    const std::uint32_t a = from.idx(), b = to.idx();
+    for (int k = 0; k < d0t_.size(a); ++k) {
+      const auto e = static_cast<std::uint32_t>(d0t_.cols(a)[k]);
+      const signed char s = d0t_.vals(a)[k];
+      d0_.erase(e, static_cast<int>(a));
+      d0_.set(e, static_cast<int>(b), s);
+      d0t_.set(b, static_cast<int>(e), s);
+    }
+    d0t_.clear_row(a);
+  }
+  /// Exchanges the incidences of p and q (not their points).
+  void swap_incidences(Vertex_index p, Vertex_index q) {
+    std::vector<std::pair<int, signed char>> ep, eq;
+    for (int k = 0; k < d0t_.size(p.idx()); ++k) ep.emplace_back(d0t_.cols(p.idx())[k], d0t_.vals(p.idx())[k]);
+    for (int k = 0; k < d0t_.size(q.idx()); ++k) eq.emplace_back(d0t_.cols(q.idx())[k], d0t_.vals(q.idx())[k]);
+    for (auto [e, s] : ep) d0_.erase(static_cast<std::uint32_t>(e), static_cast<int>(p.idx()));
+    for (auto [e, s] : eq) d0_.erase(static_cast<std::uint32_t>(e), static_cast<int>(q.idx()));
+    for (auto [e, s] : ep) d0_.set(static_cast<std::uint32_t>(e), static_cast<int>(q.idx()), s);
+    for (auto [e, s] : eq) d0_.set(static_cast<std::uint32_t>(e), static_cast<int>(p.idx()), s);
+    d0t_.clear_row(p.idx());
+    d0t_.clear_row(q.idx());
+    for (auto [e, s] : eq) d0t_.set(p.idx(), e, s);
+    for (auto [e, s] : ep) d0t_.set(q.idx(), e, s);
+  }
+  /// h becomes a side of f (f runs along h).
+  void add_side(Face_index f, Halfedge_index h) {
+    const signed char s = (h.idx() & 1u) ? -1 : 1;
+    const int e = static_cast<int>(h.idx() >> 1);
+    d1_.set(f.idx(), e, s);
+    d1t_.ensure_room(static_cast<std::uint32_t>(e), 2);
+    d1t_.set(static_cast<std::uint32_t>(e), static_cast<int>(f.idx()), s);
+  }
+  /// h is no longer a side of f.
+  void remove_side(Face_index f, Halfedge_index h) {
+    const int e = static_cast<int>(h.idx() >> 1);
+    d1_.erase(f.idx(), e);
+    d1t_.erase(static_cast<std::uint32_t>(e), static_cast<int>(f.idx()));
+  }
+
+  // ---- allocation policy ---------------------------------------------------
+
+  /// Some element was removed since the mesh was built or cleared.
+  [[nodiscard]] bool has_garbage() const { return garbage_; }
+  /// Whether add_* reuses removed indices (default true).
+  void set_recycle_garbage(bool b) { recycle_ = b; }
+  [[nodiscard]] bool does_recycle_garbage() const { return recycle_; }
+
+  /// Capacity for nv vertices, ne edges and nf faces.
+  void reserve(size_type nv, size_type ne, size_type nf) {
+    points_.reserve(nv);
+    vremoved_.reserve(nv);
+    eremoved_.reserve(ne);
+    fremoved_.reserve(nf);
+    d0_.reserve_shape(ne, nv);
+    d0t_.reserve_shape(nv, ne);
+    d1_.reserve_shape(nf, ne);
+    d1t_.reserve_shape(ne, nf);
+    d0_.reserve_entries(2 * ne);
+    d0t_.reserve_entries(2 * ne);
+  }
+
+  /// Back to an empty, manifold mesh with recycling on.
+  void clear() { *this = Incidence_mesh(); }
+
+  /// Bytes held by all arrays (capacities), points included.
+  [[nodiscard]] size_type memory_bytes() const {
+    auto bits = [](const std::vector<bool>& b) { return (b.capacity() + 7) / 8; };
+    return points_.capacity() * sizeof(P) + d0_.memory_bytes() + d0t_.memory_bytes() + d1_.memory_bytes() +
+           d1t_.memory_bytes() + bits(vremoved_) + bits(eremoved_) + bits(fremoved_) +
+           (vfree_.capacity() + efree_.capacity() + ffree_.capacity()) * sizeof(std::uint32_t) +
+           bits(bad_vertex_) + bits(bad_edge_);
+  }
+
+  // ---- ranges -------------------------------------------------------------
+
+  [[nodiscard]] Range<Vertex_iterator> vertices() const {
+    const auto n = static_cast<std::uint32_t>(vertices_size());
+    const std::vector<bool>* r = garbage_ ? &vremoved_ : nullptr;
+    return {Vertex_iterator(0, n, r), Vertex_iterator(n, n, r), n_vertices()};
+  }
+  [[nodiscard]] Range<Halfedge_iterator> halfedges() const {
+    const auto n = static_cast<std::uint32_t>(halfedges_size());
+    const std::vector<bool>* r = garbage_ ? &eremoved_ : nullptr;
+    return {Halfedge_iterator(0, n, r), Halfedge_iterator(n, n, r), n_halfedges()};
+  }
+  [[nodiscard]] Range<Edge_iterator> edges() const {
+    const auto n = static_cast<std::uint32_t>(edges_size());
+    const std::vector<bool>* r = garbage_ ? &eremoved_ : nullptr;
+    return {Edge_iterator(0, n, r), Edge_iterator(n, n, r), n_edges()};
+  }
+  [[nodiscard]] Range<Face_iterator> faces() const {
+    const auto n = static_cast<std::uint32_t>(faces_size());
+    const std::vector<bool>* r = garbage_ ? &fremoved_ : nullptr;
+    return {Face_iterator(0, n, r), Face_iterator(n, n, r), n_faces()};
+  }
+
+  // ---- points -------------------------------------------------------------
+
+  Point& point(Vertex_index v) { return points_[v.idx()]; }
+  const Point& point(Vertex_index v) const { return points_[v.idx()]; }
+  /// The positions as a boost lvalue property map (valid while the mesh
+  /// lives and is not moved from).
+  [[nodiscard]] Incidence_point_map<P> points() const {
+    return {const_cast<std::vector<P>*>(&points_)};
+  }
+
+  // ---- bulk building (genmesh_native_link_soup, load_soup) ----------------
+
+  /// Replaces everything: points; edge i from ends[2i] to ends[2i+1]; face f
+  /// with sides corner_edge[c] (sign corner_sign[c]) for c in
+  /// [offsets[f], offsets[f+1]). No check.
+  template <class Points>
+  void assign_incidences(const Points& pts, const std::vector<std::uint32_t>& ends, const std::vector<std::uint32_t>& offsets,
+               const std::vector<std::uint32_t>& corner_edge, const std::vector<signed char>& corner_sign) {
+    Incidence_mesh m;
+    const std::size_t np = pts.size(), ne = ends.size() / 2, nf = offsets.size() - 1, nc = corner_edge.size();
+    m.points_.reserve(np);
+    for (const auto& p : pts) m.points_.push_back(from_eigen<P>(p));
+    m.vremoved_.assign(np, false);
+    m.eremoved_.assign(ne, false);
+    m.fremoved_.assign(nf, false);
+    // d0: rows of two, sorted by vertex.
+    {
+      std::vector<std::uint32_t> begin(ne + 1);
+      std::vector<int> cols(2 * ne);
+      std::vector<signed char> vals(2 * ne);
+      for (std::size_t e = 0; e < ne; ++e) {
+        begin[e] = static_cast<std::uint32_t>(2 * e);
+        const std::uint32_t u = ends[2 * e], v = ends[2 * e + 1];
+        const bool lo_first = u < v;
+        cols[2 * e] = static_cast<int>(lo_first ? u : v);
+        vals[2 * e] = lo_first ? -1 : 1;
+        cols[2 * e + 1] = static_cast<int>(lo_first ? v : u);
+        vals[2 * e + 1] = lo_first ? 1 : -1;
+      }
+      begin[ne] = static_cast<std::uint32_t>(2 * ne);
+      m.d0_.assign(ne, np, begin, cols, vals);
+      transpose_into_(begin, cols, vals, ne, np, m.d0t_);
+    }
+    // d1: face rows sorted by edge.
+    {
+      std::vector<std::uint32_t> begin(offsets.begin(), offsets.end());
+      std::vector<int> cols(nc);
+      std::vector<signed char> vals(nc);
+      std::vector<std::pair<int, signed char>> row;
+      for (std::size_t f = 0; f < nf; ++f) {
+        row.clear();
+        for (std::uint32_t c = offsets[f]; c < offsets[f + 1]; ++c)
+          row.emplace_back(static_cast<int>(corner_edge[c]), corner_sign[c]);
+        std::sort(row.begin(), row.end());
+        for (std::size_t k = 0; k < row.size(); ++k) {
+          cols[offsets[f] + k] = row[k].first;
+          vals[offsets[f] + k] = row[k].second;
+        }
+      }
+      m.d1_.assign(nf, ne, begin, cols, vals);
+      transpose_into_(begin, cols, vals, nf, ne, m.d1t_);
+    }
+    *this = std::move(m);
+  }
+
+private:
+  static void transpose_into_(const std::vector<std::uint32_t>& begin, const std::vector<int>& cols,
+                              const std::vector<signed char>& vals, std::size_t rows, std::size_t ncols,
+                              detail::Incidence_rows& out) {
+    std::vector<std::uint32_t> tb(ncols + 1, 0);
+    for (int c : cols) ++tb[static_cast<std::size_t>(c) + 1];
+    for (std::size_t c = 0; c < ncols; ++c) tb[c + 1] += tb[c];
+    std::vector<int> tc(cols.size());
+    std::vector<signed char> tv(cols.size());
+    std::vector<std::uint32_t> fill(tb.begin(), tb.end() - 1);
+    for (std::size_t r = 0; r < rows; ++r)
+      for (std::uint32_t k = begin[r]; k < begin[r + 1]; ++k) {
+        const std::uint32_t at = fill[static_cast<std::size_t>(cols[k])]++;
+        tc[at] = static_cast<int>(r);
+        tv[at] = vals[k];
+      }
+    out.assign(ncols, rows, tb, tc, tv);
+  }
+
+  Edge_index allocate_edge_() {
+    if (recycle_ && !efree_.empty()) {
+      const std::uint32_t i = efree_.back();
+      efree_.pop_back();
+      --removed_edges_;
+      eremoved_[i] = false;
+      d0_.clear_row(i);
+      d1t_.clear_row(i);
+      return Edge_index(i);
+    }
+    const auto i = static_cast<std::uint32_t>(eremoved_.size());
+    check_room_(2 * std::size_t(i) + 1);
+    eremoved_.push_back(false);
+    d0_.reserve_shape(i + 1, 1);
+    d0t_.reserve_shape(1, i + 1);
+    d1_.reserve_shape(1, i + 1);
+    d1t_.reserve_shape(i + 1, 1);
+    if (!manifold_) bad_edge_.push_back(false);
+    return Edge_index(i);
+  }
+
+  // The side of face f at vertex v other than h's: the edge of f's d1 row,
+  // other than edge(h), whose d0 row holds v; directed by its sign in f.
+  // (Scanning f's few edges and reading their two-entry d0 rows touches
+  // less memory than merging f's row with v's d0ᵀ row.)
+  Halfedge_index side_at_(Face_index f, Vertex_index v, Halfedge_index h) const {
+    const int e = static_cast<int>(h.idx() >> 1);
+    const int vi = static_cast<int>(v.idx());
+    const int nf = d1_.size(f.idx());
+    const int* cf = d1_.cols(f.idx());
+    for (int i = 0; i < nf; ++i) {
+      const auto c = static_cast<std::uint32_t>(cf[i]);
+      if (cf[i] == e) continue;
+      const int* d = d0_.cols(c);
+      if (d[0] == vi || d[1] == vi)
+        return Halfedge_index(2u * c + (d1_.vals(f.idx())[i] > 0 ? 0u : 1u));
+    }
+    throw_cycle_(f.idx(), v.idx());
+  }
+  [[noreturn]] static void throw_cycle_(std::uint32_t f, std::uint32_t v) {
+    throw invalid_input("Incidence_mesh: face " + std::to_string(f) + " does not continue at vertex " +
+                        std::to_string(v));
+  }
+
+  // The border halfedge leaving t (h is the border halfedge entering t).
+  Halfedge_index border_leaving_(Vertex_index t, Halfedge_index h) const {
+    if (!manifold_ && bad_vertex_[t.idx()]) throw_vertex_(t.idx(), "next");
+    const int n = d0t_.size(t.idx());
+    const int* c = d0t_.cols(t.idx());
+    const signed char* s = d0t_.vals(t.idx());
+    for (int k = 0; k < n; ++k) {
+      const Halfedge_index out(2u * static_cast<std::uint32_t>(c[k]) + (s[k] < 0 ? 0u : 1u));
+      if (out != opposite(h) && !face(out).is_valid()) return out;
+    }
+    return opposite(h); // an isolated edge turns back
+  }
+  // The border halfedge entering s (h is the border halfedge leaving s).
+  Halfedge_index border_entering_(Vertex_index s0, Halfedge_index h) const {
+    if (!manifold_ && bad_vertex_[s0.idx()]) throw_vertex_(s0.idx(), "prev");
+    const int n = d0t_.size(s0.idx());
+    const int* c = d0t_.cols(s0.idx());
+    const signed char* s = d0t_.vals(s0.idx());
+    for (int k = 0; k < n; ++k) {
+      const Halfedge_index in(2u * static_cast<std::uint32_t>(c[k]) + (s[k] > 0 ? 0u : 1u));
+      if (in != opposite(h) && !face(in).is_valid()) return in;
+    }
+    return opposite(h);
+  }
+
+  // Number of fans of faces around v (faces linked through v's edges).
+  int fans_(std::uint32_t v) const {
+    std::vector<std::uint32_t> fs;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> links;
+    for (int k = 0; k < d0t_.size(v); ++k) {
+      const auto e = static_cast<std::uint32_t>(d0t_.cols(v)[k]);
+      const int n = d1t_.size(e);
+      for (int j = 0; j < n; ++j) {
+        fs.push_back(static_cast<std::uint32_t>(d1t_.cols(e)[j]));
+        if (j > 0) links.emplace_back(static_cast<std::uint32_t>(d1t_.cols(e)[0]), static_cast<std::uint32_t>(d1t_.cols(e)[j]));
+      }
+    }
+    std::sort(fs.begin(), fs.end());
+    fs.erase(std::unique(fs.begin(), fs.end()), fs.end());
+    std::vector<std::size_t> parent(fs.size());
+    for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+    auto find = [&](std::size_t i) {
+      while (parent[i] != i) i = parent[i] = parent[parent[i]];
+      return i;
+    };
+    auto at = [&](std::uint32_t f) {
+      return static_cast<std::size_t>(std::lower_bound(fs.begin(), fs.end(), f) - fs.begin());
+    };
+    int comps = static_cast<int>(fs.size());
+    for (auto [a, b] : links) {
+      const std::size_t x = find(at(a)), y = find(at(b));
+      if (x != y) {
+        parent[x] = y;
+        --comps;
+      }
+    }
+    return comps;
+  }
+
+  void update_manifold_flags_() {
+    const Incidence_manifold_report r = manifold_report();
+    manifold_ = r.ok();
+    bad_edge_.clear();
+    bad_vertex_.clear();
+    if (manifold_) return;
+    bad_edge_.assign(edges_size(), false);
+    bad_vertex_.assign(vertices_size(), false);
+    for (auto e : r.fin_edges) bad_edge_[e.idx()] = true;
+    for (auto e : r.misoriented_edges) bad_edge_[e.idx()] = true;
+    for (auto v : r.non_manifold_vertices) bad_vertex_[v.idx()] = true;
+  }
+
+  [[noreturn]] void throw_edge_(std::uint32_t e, const char* query) const {
+    throw invalid_input(std::string("Incidence_mesh::") + query + ": edge " + std::to_string(e) +
+                        (d1t_.size(e) > 2 ? " is in " + std::to_string(d1t_.size(e)) + " faces (a fin)"
+                                          : std::string(" has two faces running the same way along it")) +
+                        "; halfedge queries need a manifold edge");
+  }
+  [[noreturn]] void throw_vertex_(std::uint32_t v, const char* query) const {
+    throw invalid_input(std::string("Incidence_mesh::") + query + ": vertex " + std::to_string(v) +
+                        " is not manifold (its faces form several fans); halfedge queries need a manifold vertex");
+  }
+  static void check_room_(std::size_t i) {
+    if (i + 2 >= std::size_t(Vertex_index::invalid_value) || i + 2 >= std::size_t(std::numeric_limits<int>::max()))
+      throw invalid_input("Incidence_mesh: too many elements");
+  }
+
+  std::vector<P> points_;
+  detail::Incidence_rows d0_;  // E × V
+  detail::Incidence_rows d0t_; // V × E
+  detail::Incidence_rows d1_;  // F × E
+  detail::Incidence_rows d1t_; // E × F
+  std::vector<bool> vremoved_, eremoved_, fremoved_;
+  std::vector<std::uint32_t> vfree_, efree_, ffree_; // LIFO free lists
+  std::size_t removed_vertices_ = 0, removed_edges_ = 0, removed_faces_ = 0;
+  bool garbage_ = false;
+  bool recycle_ = true;
+  bool manifold_ = true;
+  std::vector<bool> bad_edge_, bad_vertex_; // empty while manifold_
+};
+
+// ---------------------------------------------------------------------------
+// Property maps
+// ---------------------------------------------------------------------------
+
+template <class P>
+Incidence_point_map<P> get(vertex_point_t, const Incidence_mesh<P>& m) {
+  return m.points();
+}
+template <class P>
+Index_map<Vertex_index> get(vertex_index_t, const Incidence_mesh<P>&) {
+  return {};
+}
+template <class P>
+Index_map<Halfedge_index> get(halfedge_index_t, const Incidence_mesh<P>&) {
+  return {};
+}
+template <class P>
+Index_map<Edge_index> get(edge_index_t, const Incidence_mesh<P>&) {
+  return {};
+}
+template <class P>
+Index_map<Face_index> get(face_index_t, const Incidence_mesh<P>&) {
+  return {};
+}
+template <class P>
+std::size_t index_bound(vertex_index_t, const Incidence_mesh<P>& m) {
+  return m.vertices_size();
+}
+template <class P>
+std::size_t index_bound(halfedge_index_t, const Incidence_mesh<P>& m) {
+  return m.halfedges_size();
+}
+template <class P>
+std::size_t index_bound(edge_index_t, const Incidence_mesh<P>& m) {
+  return m.edges_size();
+}
+template <class P>
+std::size_t index_bound(face_index_t, const Incidence_mesh<P>& m) {
+  return m.faces_size();
+}
+
+} // namespace genmesh
+
+// ---------------------------------------------------------------------------
+// boost::graph_traits
+// ---------------------------------------------------------------------------
+
+namespace boost {
+
+template <class P>
+struct graph_traits<genmesh::Incidence_mesh<P>> {
+private:
+  struct Traversal_category : public virtual boost::vertex_list_graph_tag,
+                              public virtual boost::edge_list_graph_tag {};
+
+public:
+  using vertex_descriptor = genmesh::Vertex_index;
+  using halfedge_descriptor = genmesh::Halfedge_index;
+  using edge_descriptor = genmesh::Edge_index;
+  using face_descriptor = genmesh::Face_index;
+  using vertex_property_type = P;
+
+  using directed_category = boost::undirected_tag;
+  using edge_parallel_category = boost::disallow_parallel_edge_tag;
+  using traversal_category = Traversal_category;
+
+  using vertex_iterator = genmesh::Vertex_iterator;
+  using halfedge_iterator = genmesh::Halfedge_iterator;
+  using edge_iterator = genmesh::Edge_iterator;
+  using face_iterator = genmesh::Face_iterator;
+
+  using vertices_size_type = std::size_t;
+  using halfedges_size_type = std::size_t;
+  using edges_size_type = std::size_t;
+  using faces_size_type = std::size_t;
+  using degree_size_type = std::size_t;
+
+  static vertex_descriptor null_vertex() { return {}; }
+  static halfedge_descriptor null_halfedge() { return {}; }
+  static face_descriptor null_face() { return {}; }
+};
+
+template <class P>
+struct graph_traits<const genmesh::Incidence_mesh<P>> : graph_traits<genmesh::Incidence_mesh<P>> {};
+
+} // namespace boost
+
+// ---------------------------------------------------------------------------
+// CGAL BGL free functions (found by ADL through Incidence_mesh)
+// ---------------------------------------------------------------------------
+
+namespace genmesh {
+
+template <class P>
+std::size_t num_vertices(const Incidence_mesh<P>& m) {
+  return m.n_vertices();
+}
+template <class P>
+std::size_t num_halfedges(const Incidence_mesh<P>& m) {
+  return m.n_halfedges();
+}
+template <class P>
+std::size_t num_edges(const Incidence_mesh<P>& m) {
+  return m.n_edges();
+}
+template <class P>
+std::size_t num_faces(const Incidence_mesh<P>& m) {
+  return m.n_faces();
+}
+template <class P>
+Range<Vertex_iterator> vertices(const Incidence_mesh<P>& m) {
+  return m.vertices();
+}
+template <class P>
+Range<Halfedge_iterator> halfedges(const Incidence_mesh<P>& m) {
+  return m.halfedges();
+}
+template <class P>
+Range<Edge_iterator> edges(const Incidence_mesh<P>& m) {
+  return m.edges();
+}
+template <class P>
+Range<Face_iterator> faces(const Incidence_mesh<P>& m) {
+  return m.faces();
+}
+
+template <class P>
+Vertex_index source(Halfedge_index h, const Incidence_mesh<P>& m) {
+  return m.source(h);
+}
+template <class P>
+Vertex_index target(Halfedge_index h, const Incidence_mesh<P>& m) {
+  return m.target(h);
+}
+template <class P>
+Vertex_index source(Edge_index e, const Incidence_mesh<P>& m) {
+  return m.source(m.halfedge(e));
+}
+template <class P>
+Vertex_index target(Edge_index e, const Incidence_mesh<P>& m) {
+  return m.target(m.halfedge(e));
+}
+template <class P>
+Halfedge_index next(Halfedge_index h, const Incidence_mesh<P>& m) {
+  return m.next(h);
+}
+template <class P>
+Halfedge_index prev(Halfedge_index h, const Incidence_mesh<P>& m) {
+  return m.prev(h);
+}
+template <class P>
+Halfedge_index opposite(Halfedge_index h, const Incidence_mesh<P>&) {
+  return Incidence_mesh<P>::opposite(h);
+}
+template <class P>
+Edge_index edge(Halfedge_index h, const Incidence_mesh<P>&) {
+  return Incidence_mesh<P>::edge(h);
+}
+template <class P>
+Halfedge_index halfedge(Edge_index e, const Incidence_mesh<P>&) {
+  return Incidence_mesh<P>::halfedge(e);
+}
+template <class P>
+Halfedge_index halfedge(Vertex_index v, const Incidence_mesh<P>& m) {
+  return m.halfedge(v);
+}
+template <class P>
+std::pair<Halfedge_index, bool> halfedge(Vertex_index u, Vertex_index v, const Incidence_mesh<P>& m) {
+  const Halfedge_index h = m.halfedge(u, v);
+  return {h, h.is_valid()};
+}
+template <class P>
+std::pair<Edge_index, bool> edge(Vertex_index u, Vertex_index v, const Incidence_mesh<P>& m) {
+  const Halfedge_index h = m.halfedge(u, v);
+  return {Edge_index(h), h.is_valid()};
+}
+template <class P>
+std::size_t degree(Vertex_index v, const Incidence_mesh<P>& m) {
+  return m.degree(v);
+}
+template <class P>
+Face_index face(Halfedge_index h, const Incidence_mesh<P>& m) {
+  return m.face(h);
+}
+template <class P>
+Halfedge_index halfedge(Face_index f, const Incidence_mesh<P>& m) {
+  return m.halfedge(f);
+}
+template <class P>
+std::size_t degree(Face_index f, const Incidence_mesh<P>& m) {
+  return m.degree(f);
+}
+
+template <class P>
+Vertex_index add_vertex(Incidence_mesh<P>& m) {
+  return m.add_vertex();
+}
+template <class P>
+Vertex_index add_vertex(const typename Incidence_mesh<P>::Point& p, Incidence_mesh<P>& m) {
+  return m.add_vertex(p);
+}
+/// A new edge with no ends yet (set them with g.set_edge_vertices(e, u, v)).
+template <class P>
+Edge_index add_edge(Incidence_mesh<P>& m) {
+  return m.add_edge();
+}
+/// A new face with no side yet (give it sides with g.add_side(f, h)).
+template <class P>
+Face_index add_face(Incidence_mesh<P>& m) {
+  return m.add_face();
+}
+/// Removes v with its incidences (no edge is removed: use it on isolated vertices).
+template <class P>
+void remove_vertex(Vertex_index v, Incidence_mesh<P>& m) {
+  m.remove_vertex(v);
+}
+template <class P>
+void remove_edge(Edge_index e, Incidence_mesh<P>& m) {
+  m.remove_edge(e);
+}
+template <class P>
+void remove_face(Face_index f, Incidence_mesh<P>& m) {
+  m.remove_face(f);
+}
+template <class P>
+void reserve(Incidence_mesh<P>& m, std::size_t nv, std::size_t ne, std::size_t nf) {
+  m.reserve(nv, ne, nf);
+}
+
+/// Replaces g by soup (see Incidence_mesh::load_soup): non-manifold soups load.
+template <class P>
+void load_soup(const Polygon_soup& soup, Incidence_mesh<P>& g) {
+  g.load_soup(soup);
+}
+
+/// detail::link_soup()'s contract on Incidence_mesh (build_mesh() and the
+/// subdivision schemes build through it): same vertex, edge and face order,
+/// same edge directions as on Halfedge_mesh. g must be empty.
+template <class P>
+std::size_t genmesh_native_link_soup(const Polygon_soup& s, const std::vector<std::uint32_t>& twin,
+                                     const std::vector<std::uint32_t>& /*border_out*/, std::size_t ne,
+                                     Incidence_mesh<P>& g, std::vector<std::uint32_t>* corner_edge = nullptr) {
+  const std::size_t nf = s.num_faces(), nc = s.indices.size();
+  std::vector<std::uint32_t> ends;
+  ends.reserve(2 * ne);
+  std::vector<std::uint32_t> ce(nc, detail::k_null);
+  std::vector<signed char> sign(nc, 0);
+  std::size_t border = 0;
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::uint32_t first = s.offsets[f], last = s.offsets[f + 1] - 1;
+    for (std::uint32_t c = first; c <= last; ++c) {
+      if (twin[c] == detail::k_null) ++border;
+      if (ce[c] != detail::k_null) continue;
+      const auto e = static_cast<std::uint32_t>(ends.size() / 2);
+      ends.push_back(s.indices[c]);
+      ends.push_back(s.indices[c == last ? first : c + 1]);
+      ce[c] = e;
+      sign[c] = 1;
+      if (twin[c] != detail::k_null) {
+        ce[twin[c]] = e;
+        sign[twin[c]] = -1;
+      }
+    }
+  }
+  g.assign_incidences(s.points, ends, s.offsets, ce, sign);
+  if (corner_edge) *corner_edge = std::move(ce);
+  return border;
+}
+
+// The claims of this header, checked where it is compiled.
+static_assert(HalfedgeListGraph<Incidence_mesh<>> && VertexListGraph<Incidence_mesh<>> &&
+              EdgeListGraph<Incidence_mesh<>> && FaceListGraph<Incidence_mesh<>>);
+static_assert(!MutableHalfedgeGraph<Incidence_mesh<>>);
+static_assert(HasVertexPoints<Incidence_mesh<>> && HasIndexMap<Incidence_mesh<>, vertex_index_t> &&
+              HasIndexMap<Incidence_mesh<>, halfedge_index_t> && HasIndexMap<Incidence_mesh<>, edge_index_t> &&
+              HasIndexMap<Incidence_mesh<>, face_index_t>);
+static_assert(detail::Has_native_link_soup<Incidence_mesh<>> && detail::Soup_buildable<Incidence_mesh<>>);
+
+} // namespace genmesh
+
+#include <genmesh/detail/incidence_operations.h>
