@@ -3,6 +3,7 @@
 
 #include <genmesh/adaptors/cgal.h>
 #include <genmesh/halfedge_mesh.h>
+#include <genmesh/incidence_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -20,10 +21,15 @@ namespace genmesh_test {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Surface_mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using Halfedge_mesh = genmesh::Halfedge_mesh<>;
+using Incidence_mesh = genmesh::Incidence_mesh<>;
 
-/// Every backend a typed algorithm test runs on (the incidence mesh joins
-/// with its own issue).
-using Backends = ::testing::Types<Halfedge_mesh, Surface_mesh>;
+/// Every backend a typed algorithm test runs on.
+using Backends = ::testing::Types<Halfedge_mesh, Surface_mesh, Incidence_mesh>;
+
+/// The backends that store halfedge links (MutableFaceGraph: set_next & co):
+/// for tests that corrupt links on purpose or run CGAL::Euler on the mesh
+/// itself. Incidence_mesh derives its links from the matrices instead.
+using Pointer_backends = ::testing::Types<Halfedge_mesh, Surface_mesh>;
 
 /// A real mesh from libcgal-demo (fetched by scripts/run.sh setup). Missing
 /// data is a failure, never a silent skip.

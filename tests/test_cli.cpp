@@ -76,6 +76,7 @@ TEST(Cli, DemoRunsEveryBackendAndTheyAgree) {
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("all backends agree"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("surface-mesh"), std::string::npos);
+  EXPECT_NE(r.out.find("incidence"), std::string::npos);
   EXPECT_EQ(r.out.find("DIFFERS"), std::string::npos) << r.out;
 
   Cli_run j = genmesh("demo --json");
@@ -84,7 +85,7 @@ TEST(Cli, DemoRunsEveryBackendAndTheyAgree) {
   int records = 0;
   for (std::string line; std::getline(lines, line); ++records)
     EXPECT_TRUE(json_bool(line, "same_as_reference")) << line;
-  EXPECT_GE(records, 24);  // six meshes, two steps, two backends
+  EXPECT_GE(records, 54);  // six meshes, three steps, three backends
 }
 
 // `info --json` on real meshes equals CGAL's own reading of the file.
@@ -101,7 +102,7 @@ TEST(Cli, InfoCountsEqualCgalOnRealMeshes) {
     std::size_t components = CGAL::Polygon_mesh_processing::connected_components(sm, fcc);
     for (auto v : sm.vertices()) components += sm.is_isolated(v) ? 1 : 0;
 
-    for (const char* backend : {"halfedge", "surface-mesh"}) {
+    for (const char* backend : {"halfedge", "surface-mesh", "incidence"}) {
       SCOPED_TRACE(std::string(name) + " on " + backend);
       Cli_run r = genmesh("info --json --backend " + std::string(backend) + " " + path);
       ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -130,11 +131,15 @@ TEST(Cli, InfoCountsEqualCgalOnRealMeshes) {
 TEST(Cli, CheckRefusesNonManifoldWithExitOne) {
   const std::string path = tmp_path("fin.off");
   write_file(path, "OFF\n5 3 0\n0 0 0\n0 -1 0\n0 1 1\n-1 0 1\n1 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
-  for (const char* backend : {"halfedge", "surface-mesh"}) {
+  for (const char* backend : {"halfedge", "surface-mesh", "incidence"}) {
     Cli_run r = genmesh(std::string("check --backend ") + backend + " " + path);
     EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
     EXPECT_NE(r.out.find("non-manifold"), std::string::npos) << r.out;
   }
+  // The incidence mesh loads the fin as it is and names its edge (the first
+  // edge made: 0 → 1, edge 0).
+  Cli_run r = genmesh("check --backend incidence " + path);
+  EXPECT_NE(r.out.find("edges in three or more faces: 0\n"), std::string::npos) << r.out;
 }
 
 TEST(Cli, CheckRepairsABowTie) {
@@ -143,6 +148,9 @@ TEST(Cli, CheckRepairsABowTie) {
   write_file(path, "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n-1 0 0\n-1 -1 0\n3 0 1 2\n3 0 3 4\n");
   Cli_run refused = genmesh("check " + path);
   EXPECT_EQ(refused.exit_code, 1) << refused.out << refused.err;
+  Cli_run named = genmesh("check --backend incidence " + path);
+  EXPECT_EQ(named.exit_code, 1) << named.out << named.err;
+  EXPECT_NE(named.out.find("vertices whose faces form several fans: 0\n"), std::string::npos) << named.out;
   Cli_run repaired = genmesh("info --json --repair " + path);
   EXPECT_EQ(repaired.exit_code, 0) << repaired.out << repaired.err;
   EXPECT_EQ(json_int(repaired.out, "vertices"), 6);  // the bow-tie vertex is split in two
@@ -224,7 +232,7 @@ TEST(Cli, SubdivideGivesTheSchemesCountsOnEveryBackend) {
   ASSERT_EQ(ref.exit_code, 0) << ref.err;
   const long long v = json_int(ref.out, "vertices"), e = json_int(ref.out, "edges"),
                   f = json_int(ref.out, "faces");
-  for (const char* backend : {"halfedge", "surface-mesh"}) {
+  for (const char* backend : {"halfedge", "surface-mesh", "incidence"}) {
     SCOPED_TRACE(backend);
     const std::string out = tmp_path(std::string("loop_") + backend + ".ply");
     Cli_run r = genmesh("subdivide " + in + " " + out + " --scheme loop --levels 1 --binary --json --backend " +

@@ -1,7 +1,8 @@
-// tests/test_local_operations.cpp — flip, split, collapse, split/join face,
-// center vertex, add/remove face, triangulation: golden cases with diagrams
+// tests/test_local_operations.cpp — flip and its inverse unflip, split,
+// collapse, split/join face, center vertex, add/remove face, triangulation,
+// erase, bevel of a vertex, an edge and a face: golden cases with diagrams
 // (every refusal leaves the mesh untouched, array for array), equality with
-// CGAL::Euler element for element, and a seeded random stress test on
+// CGAL::Euler element for element, and seeded random stress tests on
 // generated and real meshes, compared across backends.
 #include "backends.h"
 
@@ -76,6 +77,9 @@ std::vector<std::size_t> snapshot(const G& g) {
   for (std::size_t i = 0; i < nh; ++i) {
     const H<G> h(static_cast<std::uint32_t>(i));
     s.push_back(g.is_removed(h));
+    // A removed halfedge of the incidence mesh has no entries left to read.
+    if constexpr (!genmesh::MutableFaceGraph<G>)
+      if (g.is_removed(h)) continue;
     s.push_back(std::size_t(next(h, g)));
     s.push_back(std::size_t(target(h, g)));
     s.push_back(std::size_t(face(h, g)));
@@ -159,6 +163,14 @@ template <class G>
 class Local_operations : public ::testing::Test {};
 TYPED_TEST_SUITE(Local_operations, genmesh_test::Backends);
 
+// Tests that run CGAL::Euler on the mesh itself, or override a generic
+// operation natively: only for backends with halfedge links (the incidence
+// mesh has its own native operations, compared with Halfedge_mesh's in
+// SameRandomSequenceSameMesh below and in test_incidence_mesh).
+template <class G>
+class Local_operations_links : public ::testing::Test {};
+TYPED_TEST_SUITE(Local_operations_links, genmesh_test::Pointer_backends);
+
 // ---------------------------------------------------------------------------
 // flip_edge
 // ---------------------------------------------------------------------------
@@ -237,6 +249,109 @@ TYPED_TEST(Local_operations, FlipTwiceGivesTheSameMeshFourTimesTheSameArrays) {
   }
 }
 
+/// next, prev, target and face of every live halfedge (the links a flip edits).
+template <class G>
+std::vector<std::size_t> links(const G& g) {
+  std::vector<std::size_t> s;
+  const std::size_t nh = genmesh::index_bound(genmesh::halfedge_index, g);
+  for (std::size_t i = 0; i < nh; ++i) {
+    const H<G> h(static_cast<std::uint32_t>(i));
+    if (g.is_removed(h)) continue;
+    for (const std::size_t x : {std::size_t(next(h, g)), std::size_t(prev(h, g)), std::size_t(target(h, g)),
+                                std::size_t(face(h, g))})
+      s.push_back(x);
+  }
+  return s;
+}
+
+template <class G>
+std::vector<std::size_t> vertex_halfedges(const G& g) {
+  std::vector<std::size_t> s;
+  for (std::size_t i = 0; i < genmesh::index_bound(genmesh::vertex_index, g); ++i)
+    s.push_back(std::size_t(halfedge(V<G>(static_cast<std::uint32_t>(i)), g)));
+  return s;
+}
+template <class G>
+std::vector<std::size_t> face_halfedges(const G& g) {
+  std::vector<std::size_t> s;
+  for (std::size_t i = 0; i < genmesh::index_bound(genmesh::face_index, g); ++i)
+    s.push_back(std::size_t(halfedge(F<G>(static_cast<std::uint32_t>(i)), g)));
+  return s;
+}
+
+TYPED_TEST(Local_operations, UnflipUndoesFlip) {
+  using G = TypeParam;
+  G g = make<G>(genmesh::make_icosphere(1));
+  std::mt19937 rng(9);
+  int tested = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const H<G> h(static_cast<std::uint32_t>(rng() % genmesh::index_bound(genmesh::halfedge_index, g)));
+    if (!genmesh::can_flip_edge(h, g)) {
+      EXPECT_FALSE(genmesh::can_unflip_edge(opposite(h, g), g));
+      continue;
+    }
+    ++tested;
+    const V<G> s = source(h, g), t = target(h, g);
+    const F<G> fh = face(h, g), foh = face(opposite(h, g), g);
+    const auto soup0 = canon(g);
+    const auto links0 = links(g);
+    const auto vreps0 = vertex_halfedges(g), freps0 = face_halfedges(g);
+    ASSERT_EQ(genmesh::flip_edge(h, g), h);
+    const auto arrays1 = snapshot(g);
+    ASSERT_TRUE(genmesh::can_unflip_edge(h, g));
+    ASSERT_EQ(genmesh::unflip_edge(h, g), h);
+    // Every link is back; only the representatives flip_edge overwrote
+    // (halfedge of the old ends and of the two faces) may differ.
+    EXPECT_EQ(links(g), links0);
+    EXPECT_EQ(canon(g), soup0);
+    EXPECT_EQ(source(h, g), s);
+    EXPECT_EQ(target(h, g), t);
+    if constexpr (genmesh::MutableFaceGraph<G>) { // stored representatives (the incidence mesh derives them)
+      EXPECT_EQ(halfedge(fh, g), h);
+      EXPECT_EQ(halfedge(foh, g), opposite(h, g));
+    }
+    auto vreps = vertex_halfedges(g), freps = face_halfedges(g);
+    vreps[std::size_t(s)] = vreps0[std::size_t(s)];
+    vreps[std::size_t(t)] = vreps0[std::size_t(t)];
+    freps[std::size_t(fh)] = freps0[std::size_t(fh)];
+    freps[std::size_t(foh)] = freps0[std::size_t(foh)];
+    EXPECT_EQ(vreps, vreps0);
+    EXPECT_EQ(freps, freps0);
+    const auto arrays2 = snapshot(g);
+    // From here on, flip/unflip pairs in either order restore every array bit for bit.
+    ASSERT_TRUE(genmesh::flip_edge(h, g));
+    EXPECT_EQ(snapshot(g), arrays1);
+    ASSERT_TRUE(genmesh::unflip_edge(h, g));
+    EXPECT_EQ(snapshot(g), arrays2);
+    ASSERT_TRUE(genmesh::unflip_edge(h, g));
+    ASSERT_TRUE(genmesh::flip_edge(h, g));
+    EXPECT_EQ(snapshot(g), arrays2);
+    expect_ok(g);
+  }
+  EXPECT_GE(tested, 20);
+}
+
+TYPED_TEST(Local_operations, UnflipRotatesBackward) {
+  using G = TypeParam;
+  G g = make<G>(square());
+  const H<G> h = he(g, 0, 2); // in face (0,2,3)
+  // 3 ---- 2
+  // | \    |   unflip turns the diagonal one vertex backward: h now 1 -> 3
+  // |   \  |   (flip_edge would make it 3 -> 1), faces (1,3,0) and (3,1,2)
+  // 0 ---- 1
+  ASSERT_EQ(genmesh::unflip_edge(h, g), h);
+  EXPECT_EQ(source(h, g), vtx<G>(1));
+  EXPECT_EQ(target(h, g), vtx<G>(3));
+  EXPECT_EQ(target(next(h, g), g), vtx<G>(0)); // face(h) = (1,3,0)
+  EXPECT_EQ(canon(g), canon(make<G>(soup_of({P(0, 0), P(1, 0), P(1, 1), P(0, 1)}, {{0, 1, 3}, {1, 2, 3}}))));
+  expect_ok(g);
+  // The refusals are flip_edge's.
+  expect_refused(g, [](G& m) { return genmesh::unflip_edge(he(m, 0, 1), m).has_value(); });
+  G t = make<G>(genmesh::make_tetrahedron());
+  for (std::uint32_t i = 0; i < 12; ++i)
+    expect_refused(t, [i](G& m) { return genmesh::unflip_edge(H<G>(i), m).has_value(); });
+}
+
 // ---------------------------------------------------------------------------
 // split_edge, split_edge_and_triangulate
 // ---------------------------------------------------------------------------
@@ -307,9 +422,10 @@ TYPED_TEST(Local_operations, CollapseKeepsTheTarget) {
     G g = make<G>(fan3());
     // The centre 3 into corner 0: the triangle (0,1,2) is left.
     const H<G> h = he(g, 3, 0);
+    const V<G> t = target(h, g);
     const auto r = genmesh::collapse_edge(edge(h, g), g);
     ASSERT_TRUE(r);
-    EXPECT_EQ(*r, target(h, g)); // halfedge(edge(h)) == h on both backends
+    EXPECT_EQ(*r, t); // halfedge(edge(h)) == h on every backend
     EXPECT_EQ(*r, vtx<G>(0));
     EXPECT_EQ(canon(g), canon(make<G>(soup_of({P(0, 0), P(2, 0), P(1, 2)}, {{0, 1, 2}}))));
     expect_ok(g);
@@ -412,6 +528,22 @@ TYPED_TEST(Local_operations, SplitFaceAndJoinFaceRefusals) {
     expect_ok(p);
     expect_refused(p, split(he(p, 3, 0), he(p, 1, 2)));
     expect_refused(p, split(he(p, 1, 2), he(p, 3, 0)));
+  }
+  {
+    // 3 --------- 2      two faces around a square hole, sharing the edges
+    // |  7 ----- 6|      0-4 and 2-6: joining across one would leave the
+    // |  |  hole | |     merged face on both sides of the other (CGAL's
+    // |  4 ----- 5|      join_face does that; genmesh refuses).
+    // 0 --------- 1      A = (0,1,2,6,5,4), B = (0,4,7,6,2,3)
+    G a = make<G>(soup_of({P(0, 0), P(3, 0), P(3, 3), P(0, 3), P(1, 1), P(2, 1), P(2, 2), P(1, 2)},
+                          {{0, 1, 2, 6, 5, 4}, {0, 4, 7, 6, 2, 3}}));
+    expect_ok(a);
+    for (const auto& [u, v] : {std::pair{0, 4}, std::pair{4, 0}, std::pair{2, 6}, std::pair{6, 2}}) {
+      const H<G> h = he(a, u, v);
+      EXPECT_FALSE(genmesh::can_join_face(h, a));
+      expect_refused(a, [h](G& m) { return genmesh::join_face(h, m).has_value(); });
+      expect_refused(a, [h](G& m) { return genmesh::erase_edge(edge(h, m), m).has_value(); });
+    }
   }
   {
     G t = make<G>(soup_of({P(0, 0), P(1, 0), P(0, 1)}, {{0, 1, 2}})); // lone triangle: all ends degree 2
@@ -605,8 +737,178 @@ TYPED_TEST(Local_operations, BevelVertexCutsACorner) {
     expect_refused(s, [i](G& m) { return genmesh::bevel_vertex(vtx<G>(i), m).has_value(); });
 }
 
+TYPED_TEST(Local_operations, BevelEdgeOpensTheSquareDiagonal) {
+  using G = TypeParam;
+  G g = make<G>(square());
+  const H<G> h = he(g, 0, 2); // u = 0, v = 2, L = (0,2,3), R = (0,1,2)
+  const auto r = genmesh::bevel_edge(h, g);
+  ASSERT_TRUE(r);
+  //  3 ---- 2             3 ------ 2 _          each end has degree 3: it splits,
+  //  |    / |             |      /     ` 5      the hole between its two groups of
+  //  |  /   |     ->      |    /    Q    |      edges gains the new side (2-5, 0-4);
+  //  0 ---- 1             0 _/          |       the ends slide 1/4 along L's sides
+  //                           ` 4 ------ 1      (0 up, 2 left), the copies along R's.
+  // Q = (2, 0, 4, 5) replaces the edge; L = (0,2,3) and R = (4,1,5) stay triangles.
+  EXPECT_EQ(*r, opposite(h, g));
+  EXPECT_EQ(source(h, g), vtx<G>(0));
+  EXPECT_EQ(target(h, g), vtx<G>(2));
+  EXPECT_EQ(halfedge(face(*r, g), g), *r);
+  EXPECT_EQ(degree(face(*r, g), g), 4u);
+  const Polygon_soup expected =
+      soup_of({P(0, 0.25), P(1, 0), P(0.75, 1), P(0, 1), P(0.25, 0), P(1, 0.75)}, {{0, 2, 3}, {4, 1, 5}, {2, 0, 4, 5}});
+  EXPECT_EQ(canon(g), canon(make<G>(expected)));
+  const auto rep = genmesh::check_mesh(g);
+  EXPECT_TRUE(rep.ok()) << genmesh::to_string(rep);
+  EXPECT_EQ(rep.border_halfedges, 6u);
+}
+
+TYPED_TEST(Local_operations, BevelEdgeOfTheCube) {
+  using G = TypeParam;
+  G g = make<G>(genmesh::make_cube());
+  //      3 ------- 7           the edge 0-1 (x from -1 to 1 at y = z = -1),
+  //     /|        /|           L = y=-1 face (0,1,5,4), R = z=-1 face (0,2,3,1):
+  //    2 ------- 6 |           0 and 1 split; the third face at each end
+  //    | 1 ------|-5           (x=-1 and x=+1) becomes a pentagon; the new
+  //    |/        |/            quad Q = (1, 0, 8, 9) is the chamfer; 0 and 1
+  //    0 ------- 4             slide along z, 8 and 9 (their copies) along y.
+  // (z up the page, y into it; vertex i has coordinates from its bits x, y, z.)
+  const H<G> h = he(g, 0, 1);
+  ASSERT_EQ(face(h, g), face(he(g, 1, 5), g)); // L is the y = -1 face
+  const auto r = genmesh::bevel_edge(h, g, {.fraction = 0.25});
+  ASSERT_TRUE(r);
+  Polygon_soup expected = genmesh::make_cube();
+  expected.points[0] = Eigen::Vector3d(-1, -1, -0.5);
+  expected.points[1] = Eigen::Vector3d(1, -1, -0.5);
+  Polygon_soup e2;
+  e2.points = expected.points;
+  e2.add_point(Eigen::Vector3d(-1, -0.5, -1)); // 8 = 0'
+  e2.add_point(Eigen::Vector3d(1, -0.5, -1));  // 9 = 1'
+  for (const auto& f : std::vector<std::vector<std::uint32_t>>{
+           {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {8, 2, 3, 9}, {8, 0, 4, 6, 2}, {1, 9, 3, 7, 5}, {1, 0, 8, 9}})
+    e2.add_face(f);
+  EXPECT_EQ(canon(g), genmesh::canonical(e2));
+  const auto rep = genmesh::check_mesh(g);
+  EXPECT_TRUE(rep.ok()) << genmesh::to_string(rep);
+  EXPECT_EQ(rep.vertices, 10u);
+  EXPECT_EQ(rep.edges, 15u);
+  EXPECT_EQ(rep.faces, 7u);
+  EXPECT_EQ(rep.genus, 0);
+}
+
+TYPED_TEST(Local_operations, BevelEdgeOnTheBorderMakesATriangle) {
+  using G = TypeParam;
+  G g = make<G>(square());
+  // 3 ---- 2          3 ---- 2       the border edge 0-1: 1 has degree 2 and
+  // |    / |          |  _ / |       stays; 0 splits: 0 keeps 0-1, 0-2 and
+  // |  /   |    ->    4 -0   |       slides toward 2, its copy 4 takes 0-3
+  // 0 ---- 1           ` - - 1       and slides up; Q = (1, 0, 4) is a triangle,
+  //                                  (0,2,3) gains the side 4-0: (4,0,2,3).
+  const H<G> h = he(g, 0, 1);
+  const auto r = genmesh::bevel_edge(h, g);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(degree(face(*r, g), g), 3u);
+  const Polygon_soup expected = soup_of({P(0.25, 0.25), P(1, 0), P(1, 1), P(0, 1), P(0, 0.25)},
+                                        {{0, 1, 2}, {4, 0, 2, 3}, {1, 0, 4}});
+  EXPECT_EQ(canon(g), canon(make<G>(expected)));
+  const auto rep = genmesh::check_mesh(g);
+  EXPECT_TRUE(rep.ok()) << genmesh::to_string(rep);
+  EXPECT_EQ(rep.border_halfedges, 4u);
+  // The same edge from its border side: the new face lies in the hole's
+  // place instead, and the mesh stays valid.
+  G b = make<G>(square());
+  ASSERT_TRUE(genmesh::bevel_edge(he(b, 1, 0), b));
+  expect_ok(b);
+  EXPECT_EQ(genmesh::check_mesh(b).faces, 3u);
+}
+
+TYPED_TEST(Local_operations, BevelEdgeRefusals) {
+  using G = TypeParam;
+  auto bevel = [](H<G> h) { return [h](G& g) { return genmesh::bevel_edge(h, g).has_value(); }; };
+  {
+    //  2          the lone triangle: both ends of every edge have degree 2,
+    //  | \        the new face would have two sides
+    //  0 - 1
+    G g = make<G>(soup_of({P(0, 0), P(1, 0), P(0, 1)}, {{0, 1, 2}}));
+    for (std::uint32_t i = 0; i < 6; ++i) {
+      EXPECT_FALSE(genmesh::can_bevel_edge(H<G>(i), g));
+      expect_refused(g, bevel(H<G>(i)));
+    }
+    expect_refused(g, bevel(boost::graph_traits<G>::null_halfedge()));
+  }
+  {
+    // A lone quad: same.
+    G g = make<G>(soup_of({P(0, 0), P(1, 0), P(1, 1), P(0, 1)}, {{0, 1, 2, 3}}));
+    for (std::uint32_t i = 0; i < 8; ++i) expect_refused(g, bevel(H<G>(i)));
+  }
+  {
+    // A fraction outside [0, 1) throws before any change.
+    G g = make<G>(genmesh::make_cube());
+    const auto before = snapshot(g);
+    EXPECT_THROW(genmesh::bevel_edge(H<G>(0), g, {.fraction = 1.0}), genmesh::invalid_input);
+    EXPECT_THROW(genmesh::bevel_edge(H<G>(0), g, {.fraction = -0.1}), genmesh::invalid_input);
+    EXPECT_EQ(snapshot(g), before);
+  }
+}
+
+// Random bevel_edge (with flips and face splits/joins between, so that
+// degrees, borders and polygon sizes vary), check_mesh after each; the same
+// sequence on Halfedge_mesh gives the same mesh, element for element.
+template <class G>
+G random_bevels(const Polygon_soup& soup, unsigned seed, int steps, int* bevels) {
+  G g = make<G>(soup);
+  std::mt19937 rng(seed);
+  for (int i = 0; i < steps; ++i) {
+    const std::size_t nh = genmesh::index_bound(genmesh::halfedge_index, g);
+    const H<G> h(static_cast<std::uint32_t>(rng() % nh));
+    const unsigned pick = rng() % 4;
+    if (g.is_removed(h)) continue;
+    const auto rep_before = genmesh::check_mesh(g);
+    if (pick < 2) {
+      const bool can = genmesh::can_bevel_edge(h, g);
+      const auto r = genmesh::bevel_edge(h, g, {.fraction = 0.2});
+      EXPECT_EQ(can, r.has_value());
+      if (r) {
+        ++*bevels;
+        const auto rep = genmesh::check_mesh(g);
+        EXPECT_TRUE(rep.ok()) << "step " << i << ": " << genmesh::to_string(rep);
+        if (!rep.ok()) return g;
+        EXPECT_EQ(rep.euler_characteristic, rep_before.euler_characteristic);
+        EXPECT_EQ(rep.faces, rep_before.faces + 1);
+        EXPECT_LE(rep.vertices, rep_before.vertices + 2);
+        EXPECT_NE(face(*r, g), boost::graph_traits<G>::null_face());
+      }
+    } else if (pick == 2) {
+      (void)genmesh::flip_edge(h, g);
+    } else {
+      (void)genmesh::erase_edge(edge(h, g), g);
+    }
+    const auto rep = genmesh::check_mesh(g);
+    EXPECT_TRUE(rep.ok()) << "step " << i << ", operation " << pick << ": " << genmesh::to_string(rep);
+    if (!rep.ok()) return g;
+  }
+  return g;
+}
+
+TYPED_TEST(Local_operations, BevelEdgeRandomSequenceMatchesHalfedgeMesh) {
+  using G = TypeParam;
+  for (const auto& soup : {genmesh::make_grid_with_hole(6), genmesh::make_torus(8, 6, true), genmesh::make_cube()}) {
+    int n = 0, m = 0;
+    const G g = random_bevels<G>(soup, 5u, 400, &n);
+    const auto ref = random_bevels<genmesh_test::Halfedge_mesh>(soup, 5u, 400, &m);
+    EXPECT_GE(n, 50);
+    EXPECT_EQ(n, m);
+    if constexpr (genmesh::MutableFaceGraph<G>) {
+      EXPECT_EQ(snapshot(g), snapshot(ref));
+    } else {
+      EXPECT_EQ(links(g), links(ref)); // the incidence mesh derives halfedge(v), halfedge(f)
+    }
+    EXPECT_EQ(canon(g), canon(ref));
+  }
+}
+
 struct Counting_visitor : genmesh::Mutation_visitor {
-  int flips = 0, splits = 0, collapses = 0, before = 0, split_faces = 0;
+  int flips = 0, splits = 0, collapses = 0, before = 0, split_faces = 0, bevels = 0;
+  void on_bevel_edge(const auto&, const auto&) { ++bevels; }
   void on_flip(const auto&, const auto&) { ++flips; }
   void on_split_edge(const auto&, const auto&) { ++splits; }
   void before_collapse(const auto&, const auto&) { ++before; }
@@ -628,6 +930,10 @@ TYPED_TEST(Local_operations, VisitorSeesSuccessesOnly) {
   EXPECT_EQ(vis.splits, 1);
   EXPECT_EQ(vis.before, 1);
   EXPECT_EQ(vis.collapses, 1);
+  EXPECT_FALSE(genmesh::bevel_edge(boost::graph_traits<G>::null_halfedge(), g, {}, vis));
+  EXPECT_EQ(vis.bevels, 0);
+  EXPECT_TRUE(genmesh::bevel_edge(he(g, 3, 1), g, {}, vis));
+  EXPECT_EQ(vis.bevels, 1);
   expect_ok(g);
 }
 
@@ -646,7 +952,7 @@ std::optional<H> genmesh_native_flip_edge(H, G&, Probe& probe) {
 }
 } // namespace native_probe
 
-TYPED_TEST(Local_operations, NativeOperationsOverrideTheGenericOnes) {
+TYPED_TEST(Local_operations_links, NativeOperationsOverrideTheGenericOnes) {
   using G = TypeParam;
   G g = make<G>(square());
   const Polygon_soup before = genmesh::canonical(genmesh::to_soup(g));
@@ -668,8 +974,8 @@ enum class Op { flip, split, split_tri, collapse, center, uncenter };
 constexpr int op_count = 6;
 
 // Applies one random operation (op) to a with genmesh and, if it succeeded,
-// the same to b with CGAL::Euler (b == nullptr: genmesh only). Returns
-// whether it succeeded.
+// the same to b with CGAL::Euler (b == nullptr: genmesh only; always so on
+// a backend without halfedge links). Returns whether it succeeded.
 template <class G>
 bool random_step_once(std::mt19937& rng, G& a, G* b, Op& op) {
   const std::size_t ne = genmesh::index_bound(genmesh::edge_index, a);
@@ -686,7 +992,9 @@ bool random_step_once(std::mt19937& rng, G& a, G* b, Op& op) {
   switch (op) {
   case Op::flip: {
     if (!genmesh::flip_edge(h, a)) return false;
-    if (b) CGAL::Euler::flip_edge(h, *b);
+    if constexpr (genmesh::MutableFaceGraph<G>) {
+      if (b) CGAL::Euler::flip_edge(h, *b);
+    }
     return true;
   }
   case Op::split: {
@@ -703,12 +1011,14 @@ bool random_step_once(std::mt19937& rng, G& a, G* b, Op& op) {
     if (soh) {
       EXPECT_TRUE(genmesh::split_face(oh, next(opposite(*r, a), a), a));
     }
-    if (b) {
-      const H<G> rb = CGAL::Euler::split_edge(h, *b);
-      EXPECT_EQ(rb, *r);
-      if (sh) CGAL::Euler::split_face(rb, next(h, *b), *b);
-      if (soh) CGAL::Euler::split_face(oh, next(opposite(rb, *b), *b), *b);
-      put(get(genmesh::vertex_point, *b), target(rb, *b), get(get(genmesh::vertex_point, a), target(*r, a)));
+    if constexpr (genmesh::MutableFaceGraph<G>) {
+      if (b) {
+        const H<G> rb = CGAL::Euler::split_edge(h, *b);
+        EXPECT_EQ(rb, *r);
+        if (sh) CGAL::Euler::split_face(rb, next(h, *b), *b);
+        if (soh) CGAL::Euler::split_face(oh, next(opposite(rb, *b), *b), *b);
+        put(get(genmesh::vertex_point, *b), target(rb, *b), get(get(genmesh::vertex_point, a), target(*r, a)));
+      }
     }
     return true;
   }
@@ -718,20 +1028,24 @@ bool random_step_once(std::mt19937& rng, G& a, G* b, Op& op) {
     const bool soh = face(oh, a) != boost::graph_traits<G>::null_face();
     const auto r = genmesh::split_edge_and_triangulate(h, a);
     if (!r) return false;
-    if (b) {
-      const H<G> rb = CGAL::Euler::split_edge(h, *b);
-      if (sh) CGAL::Euler::split_face(rb, next(h, *b), *b);
-      if (soh) CGAL::Euler::split_face(oh, next(opposite(rb, *b), *b), *b);
-      put(get(genmesh::vertex_point, *b), target(rb, *b), get(get(genmesh::vertex_point, a), target(*r, a)));
+    if constexpr (genmesh::MutableFaceGraph<G>) {
+      if (b) {
+        const H<G> rb = CGAL::Euler::split_edge(h, *b);
+        if (sh) CGAL::Euler::split_face(rb, next(h, *b), *b);
+        if (soh) CGAL::Euler::split_face(oh, next(opposite(rb, *b), *b), *b);
+        put(get(genmesh::vertex_point, *b), target(rb, *b), get(get(genmesh::vertex_point, a), target(*r, a)));
+      }
     }
     return true;
   }
   case Op::center: {
     const auto r = genmesh::add_center_vertex(h, a);
     if (!r) return false;
-    if (b) {
-      EXPECT_EQ(CGAL::Euler::add_center_vertex(h, *b), *r);
-      put(get(genmesh::vertex_point, *b), target(*r, *b), get(get(genmesh::vertex_point, a), target(*r, a)));
+    if constexpr (genmesh::MutableFaceGraph<G>) {
+      if (b) {
+        EXPECT_EQ(CGAL::Euler::add_center_vertex(h, *b), *r);
+        put(get(genmesh::vertex_point, *b), target(*r, *b), get(get(genmesh::vertex_point, a), target(*r, a)));
+      }
     }
     return true;
   }
@@ -740,8 +1054,10 @@ bool random_step_once(std::mt19937& rng, G& a, G* b, Op& op) {
     if (genmesh::detail::lo::vertex_degree(target(h, a), a) != 3) return false;
     const auto r = genmesh::remove_center_vertex(h, a);
     if (!r) return false;
-    if (b) {
-      EXPECT_EQ(CGAL::Euler::remove_center_vertex(h, *b), *r);
+    if constexpr (genmesh::MutableFaceGraph<G>) {
+      if (b) {
+        EXPECT_EQ(CGAL::Euler::remove_center_vertex(h, *b), *r);
+      }
     }
     return true;
   }
@@ -752,8 +1068,10 @@ bool random_step_once(std::mt19937& rng, G& a, G* b, Op& op) {
       EXPECT_FALSE(r) << "collapse accepted against CGAL's link condition";
     }
     if (!r) return false;
-    if (b) {
-      EXPECT_EQ(CGAL::Euler::collapse_edge(e, *b), *r);
+    if constexpr (genmesh::MutableFaceGraph<G>) {
+      if (b) {
+        EXPECT_EQ(CGAL::Euler::collapse_edge(e, *b), *r);
+      }
     }
     return true;
   }
@@ -790,20 +1108,20 @@ void run_against_cgal(const Polygon_soup& soup, int steps, int check_every, unsi
   EXPECT_EQ(canon(a), canon(b));
 }
 
-TYPED_TEST(Local_operations, EqualToCgalEulerOnIcosphere) {
+TYPED_TEST(Local_operations_links, EqualToCgalEulerOnIcosphere) {
   run_against_cgal<TypeParam>(genmesh::make_icosphere(1), 1500, 1, 1u);
 }
-TYPED_TEST(Local_operations, EqualToCgalEulerOnGridWithHole) {
+TYPED_TEST(Local_operations_links, EqualToCgalEulerOnGridWithHole) {
   run_against_cgal<TypeParam>(genmesh::make_grid_with_hole(6), 1500, 1, 2u);
 }
-TYPED_TEST(Local_operations, EqualToCgalEulerOnTorus) {
+TYPED_TEST(Local_operations_links, EqualToCgalEulerOnTorus) {
   run_against_cgal<TypeParam>(genmesh::make_torus(8, 6, true), 1500, 1, 3u);
 }
-TYPED_TEST(Local_operations, EqualToCgalEulerOnElephant) {
+TYPED_TEST(Local_operations_links, EqualToCgalEulerOnElephant) {
   run_against_cgal<TypeParam>(genmesh::read_soup(genmesh_test::real_mesh("elephant.off")), 20000, 100, 4u);
 }
 
-TYPED_TEST(Local_operations, CgalEulerOnOtherOperations) {
+TYPED_TEST(Local_operations_links, CgalEulerOnOtherOperations) {
   using G = TypeParam;
   G a = make<G>(genmesh::make_cube());
   G b = make<G>(genmesh::make_cube());
@@ -864,6 +1182,28 @@ TEST(LocalOperationsAcrossBackends, SameRandomSequenceSameMesh) {
     expect_ok(b);
     EXPECT_EQ(snapshot(a), snapshot(b));
     EXPECT_EQ(canon(a), canon(b));
+
+    // The incidence mesh, with its native operations: the same successes and
+    // refusals, the same elements and links. (Its halfedge(v) and halfedge(f)
+    // are derived canonically from the matrices, so those two representatives
+    // are not compared.)
+    genmesh_test::Incidence_mesh c = make<genmesh_test::Incidence_mesh>(soup);
+    std::mt19937 rc(11);
+    int nc[op_count] = {};
+    std::mt19937 ra2(11);
+    genmesh_test::Halfedge_mesh a2 = make<genmesh_test::Halfedge_mesh>(soup);
+    int na2[op_count] = {};
+    for (int i = 0; i < 10000; ++i) {
+      const bool da = random_step(ra2, a2, static_cast<genmesh_test::Halfedge_mesh*>(nullptr), na2);
+      const bool dc = random_step(rc, c, static_cast<genmesh_test::Incidence_mesh*>(nullptr), nc);
+      ASSERT_EQ(da, dc) << "step " << i;
+      if (i % 1000 == 999) {
+        ASSERT_EQ(genmesh::to_soup(a2), genmesh::to_soup(c)) << "step " << i;
+      }
+    }
+    expect_ok(c);
+    EXPECT_EQ(links(a2), links(c)); // next, prev, target, face of every halfedge: the same indices
+    EXPECT_EQ(genmesh::to_soup(a), genmesh::to_soup(c));
   }
 }
 

@@ -7,6 +7,8 @@
 //   genmesh subdivide IN OUT --scheme S --levels N [--boundary smooth|fixed]
 //                          [--creases FILE] [--backend B] [--json]
 //   genmesh demo           [--json]                 every backend on built-in meshes
+//   (--backend halfedge|surface-mesh|incidence; check --backend incidence also
+//   names the fins, misoriented edges and bow-ties of a non-manifold input)
 //
 // Exit codes: 0 ok; 1 the mesh is invalid (reported on stdout); 2 bad input or
 // usage (message on stderr). `--json` prints one line per record; `seconds` is
@@ -14,6 +16,7 @@
 #include <genmesh/adaptors/cgal.h>
 #include <genmesh/generators.h>
 #include <genmesh/halfedge_mesh.h>
+#include <genmesh/incidence_mesh.h>
 #include <genmesh/io.h>
 #include <genmesh/local_operations.h>
 #include <genmesh/soup_to_mesh.h>
@@ -43,6 +46,7 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Surface_mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using Halfedge_mesh = genmesh::Halfedge_mesh<>;
+using Incidence_mesh = genmesh::Incidence_mesh<>;
 
 constexpr int exit_ok = 0;
 constexpr int exit_invalid = 1;
@@ -60,7 +64,7 @@ const char* usage_text =
     "  subdivide IN OUT   subdivide IN, write OUT\n"
     "  demo               run genmesh on built-in meshes on every backend\n"
     "options:\n"
-    "  --backend halfedge|surface-mesh   mesh type to build (default halfedge)\n"
+    "  --backend halfedge|surface-mesh|incidence   mesh type to build (default halfedge)\n"
     "  --json             one-line machine-readable record\n"
     "  --repair           repair a non-manifold or inconsistently oriented soup\n"
     "  --binary           binary output (PLY, STL) for convert and subdivide\n"
@@ -99,8 +103,8 @@ Args parse(int argc, char** argv) {
       } else {
         a.backend = s.substr(10);
       }
-      if (a.backend != "halfedge" && a.backend != "surface-mesh")
-        throw usage_error("unknown backend '" + a.backend + "' (halfedge|surface-mesh)");
+      if (a.backend != "halfedge" && a.backend != "surface-mesh" && a.backend != "incidence")
+        throw usage_error("unknown backend '" + a.backend + "' (halfedge|surface-mesh|incidence)");
     } else if (s == "--scheme" || s == "--levels" || s == "--boundary" || s == "--creases") {
       if (i + 1 >= argc) throw usage_error(s + " needs a value");
       const std::string v = argv[++i];
@@ -204,6 +208,10 @@ auto with_backend(const std::string& backend, F&& f) {
     Surface_mesh m;
     return f(m);
   }
+  if (backend == "incidence") {
+    Incidence_mesh m;
+    return f(m);
+  }
   Halfedge_mesh m;
   return f(m);
 }
@@ -224,7 +232,16 @@ int cmd_info_or_check(const Args& a) {
                 << "\",\"seconds\":" << seconds << "}\n";
     } else {
       std::cout << file << ": not a valid oriented 2-manifold polygon mesh\n"
-                << genmesh::to_string(soup_report) << "(run with --repair to fix what can be fixed)\n";
+                << genmesh::to_string(soup_report);
+      if (a.backend == "incidence") {
+        // The incidence mesh holds what a halfedge mesh cannot: load the soup
+        // as it is and name the fins, misoriented edges and bow-ties.
+        Incidence_mesh m;
+        m.load_soup(soup);
+        std::cout << "incidence mesh (" << m.n_vertices() << " vertices, " << m.n_edges()
+                  << " edges, " << m.n_faces() << " faces): " << genmesh::to_string(m.manifold_report());
+      }
+      std::cout << "(run with --repair to fix what can be fixed)\n";
     }
     return exit_invalid;
   }
@@ -474,7 +491,8 @@ int cmd_demo(const Args& a) {
   for (const auto& [name, soup] : meshes) {
     for (const std::string& step : demo_steps) {
       const Demo_row rows[] = {run_step<Halfedge_mesh>(name, "halfedge", step, soup),
-                               run_step<Surface_mesh>(name, "surface-mesh", step, soup)};
+                               run_step<Surface_mesh>(name, "surface-mesh", step, soup),
+                               run_step<Incidence_mesh>(name, "incidence", step, soup)};
       for (const Demo_row& r : rows) {
         // The reference is the first backend; every other must give the same
         // soup (and building alone must give back the input's faces).

@@ -164,7 +164,8 @@ inline void write_soup(const std::filesystem::path& path, const Polygon_soup& so
 /// (vertex and face order kept). A soup that build_mesh refuses (non-manifold,
 /// inconsistently oriented; see Read_options::repair) gives an io_error naming
 /// the file, with build_mesh's message.
-template <MutableFaceGraph G>
+template <class G>
+  requires detail::Soup_buildable<G>
 void read_mesh(const std::filesystem::path& path, G& g, const Read_options& options = {}) {
   const Polygon_soup soup = read_soup(path, options);
   try {
