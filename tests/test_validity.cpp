@@ -788,6 +788,34 @@ TYPED_TEST(Validity, BuildRefusesANonEmptyMesh) {
 // across backends
 // ---------------------------------------------------------------------------
 
+// The coarsest tori have strongly non-planar quads: their winding must come
+// from the parametrization (an orientation test on the corners once flipped
+// some faces of the 4 × 3 torus).
+TEST(Generators, EveryTorusIsAConsistentlyOrientedClosedSurface) {
+  for (int rings = 3; rings <= 7; ++rings)
+    for (int sides = 3; sides <= 7; ++sides)
+      for (bool tri : {false, true}) {
+        SCOPED_TRACE(std::to_string(rings) + " x " + std::to_string(sides) + (tri ? " triangles" : " quads"));
+        const Polygon_soup soup = genmesh::make_torus(rings, sides, tri);
+        const auto r = genmesh::check_soup(soup);
+        ASSERT_TRUE(r.ok()) << genmesh::to_string(r);
+        genmesh::Halfedge_mesh<> g;
+        genmesh::build_mesh(soup, g);
+        const auto m = genmesh::check_mesh(g);
+        EXPECT_TRUE(m.ok());
+        EXPECT_EQ(m.euler_characteristic, 0);
+        EXPECT_EQ(m.boundary_loops, 0u);
+        // outward normals: the enclosed signed volume (divergence theorem, faces as fans) is positive
+        double volume = 0;
+        for (std::size_t fi = 0; fi < soup.num_faces(); ++fi) {
+          const auto f = soup.face(fi);
+          for (std::size_t k = 1; k + 1 < f.size(); ++k)
+            volume += soup.points[f[0]].dot(soup.points[f[k]].cross(soup.points[f[k + 1]])) / 6.0;
+        }
+        EXPECT_GT(volume, 0.0);
+      }
+}
+
 TEST(ValidityAcrossBackends, ToSoupIsIdentical) {
   std::vector<Polygon_soup> soups;
   for (auto& sh : shapes()) soups.push_back(sh.soup);

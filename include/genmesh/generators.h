@@ -131,16 +131,18 @@ inline Polygon_soup make_torus(int rings = 24, int sides = 12, bool triangulate 
   auto id = [&](int i, int j) {
     return static_cast<Polygon_soup::Index>((i % rings) * sides + (j % sides));
   };
+  // (a, b, c, d) runs along u, then along v: its normal is ∂u × ∂v, which
+  // points away from the tube's centre line everywhere. The winding comes
+  // from the parametrization, not from the (possibly non-planar) corners, so
+  // it is consistent even on the coarsest torus.
   for (int i = 0; i < rings; ++i)
     for (int j = 0; j < sides; ++j) {
       const auto a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      const double u = two_pi * (i + 0.5) / rings;
-      const Eigen::Vector3d tube_center(R * std::cos(u), R * std::sin(u), 0.0);
       if (triangulate) {
-        detail::orient_away_from(s, s.add_face({a, b, c}), tube_center);
-        detail::orient_away_from(s, s.add_face({a, c, d}), tube_center);
+        s.add_face({a, b, c});
+        s.add_face({a, c, d});
       } else {
-        detail::orient_away_from(s, s.add_face({a, b, c, d}), tube_center);
+        s.add_face({a, b, c, d});
       }
     }
   return s;
