@@ -434,6 +434,49 @@ TYPED_TEST(Validity, RemovedElementsAreSkippedUntilCollected) {
   EXPECT_EQ(*r.genus, 0);
 }
 
+// Two triangles (0,1,2) and (3,4,5); vertex 3 merged into 0 and the border
+// links crossed at 0, so the walk around 0 is one closed cycle through both
+// fans — complete, yet the border passes through 0 twice (a pinch):
+//
+//   2          5        border: 0 → 2 → 1 → 0 → 5 → 4 → 0
+//   | \      / |
+//   |  \    /  |
+//   1 -- 0 -- 4
+TYPED_TEST(Validity_links, BorderPassingTwiceThroughAVertexIsNotManifold) {
+  TypeParam g;
+  Polygon_soup s;
+  for (double x : {0.0, -1.0, -1.0, 0.0, 1.0, 1.0}) s.add_point(Eigen::Vector3d(x, 0, 0));
+  s.points[2].y() = s.points[5].y() = 1;
+  s.add_face({0, 1, 2});
+  s.add_face({3, 4, 5});
+  genmesh::build_mesh(s, g);
+  using V = genmesh::vertex_descriptor_t<TypeParam>;
+  using H = genmesh::halfedge_descriptor_t<TypeParam>;
+  std::vector<V> vs(vertices(g).begin(), vertices(g).end());
+  std::vector<H> into3;
+  for (auto h : halfedges(g))
+    if (target(h, g) == vs[3]) into3.push_back(h);
+  for (auto h : into3) set_target(h, vs[0], g);
+  H b10{}, b40{}; // the border halfedges 1 → 0 and 4 → 0 (was 4 → 3)
+  for (auto h : into3)
+    if (CGAL::is_border(h, g)) b40 = h;
+  for (auto h : halfedges(g))
+    if (target(h, g) == vs[0] && source(h, g) == vs[1]) b10 = h;
+  ASSERT_TRUE(CGAL::is_border(b10, g));
+  const H out_a = next(b10, g), out_b = next(b40, g);
+  set_next(b10, out_b, g);
+  set_next(b40, out_a, g);
+  set_halfedge(vs[3], boost::graph_traits<TypeParam>::null_halfedge(), g);
+  remove_vertex(vs[3], g);
+  const auto r = genmesh::check_mesh(g);
+  EXPECT_TRUE(r.valid) << genmesh::to_string(r);
+  EXPECT_FALSE(r.manifold);
+  EXPECT_EQ(r.non_manifold_vertices, 1u);
+  EXPECT_TRUE(has_problem(r, genmesh::Mesh_problem_kind::non_manifold_vertex, vname(g, vs[0])))
+      << genmesh::to_string(r);
+  EXPECT_EQ(r.boundary_loops, 1u);
+}
+
 TYPED_TEST(Validity_links, LinksToRemovedElementsAreNamed) {
   TypeParam g;
   genmesh::build_mesh(genmesh::make_cube(), g);

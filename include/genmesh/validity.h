@@ -453,10 +453,12 @@ Mesh_report check_mesh(const G& g) {
     std::size_t len = 0;
     std::uint32_t c = h;
     bool closed = false, on_border = false;
+    std::size_t border_in = 0; // border halfedges ending at v: one per gap in its fan
     while (len <= in_count[v]) {
       if (!is_ref(c) || tgt[c] != v || fan_seen[c] != k_null) break;
       fan_seen[c] = v;
       on_border = on_border || fac[c] == k_null;
+      border_in += fac[c] == k_null ? 1 : 0;
       ++len;
       std::uint32_t n = nxt[c];
       if (!is_ref(n)) break;
@@ -475,6 +477,12 @@ Mesh_report check_mesh(const G& g) {
       problem(Mesh_problem_kind::non_manifold_vertex, "vertex", v,
               std::to_string(in_count[v]) + " halfedges end at it but its fan has only " + std::to_string(len) +
                   ": several fans meet here");
+    } else if (border_in > 1) {
+      // The border links can join two fans into one closed walk: the walk
+      // is complete, yet the border passes through v more than once.
+      ++r.non_manifold_vertices;
+      problem(Mesh_problem_kind::non_manifold_vertex, "vertex", v,
+              "the border passes through it " + std::to_string(border_in) + " times: several fans meet here");
     }
   }
 
