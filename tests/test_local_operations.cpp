@@ -2,8 +2,10 @@
 // collapse, split/join face, center vertex, add/remove face, triangulation,
 // erase, bevel of a vertex, an edge and a face: golden cases with diagrams
 // (every refusal leaves the mesh untouched, array for array), equality with
-// CGAL::Euler element for element, and seeded random stress tests on
-// generated and real meshes, compared across backends.
+// CGAL::Euler element for element, the refusals that keep faces simple and
+// vertices unpinched (where CGAL::Euler is looser), and seeded random stress
+// tests on generated and real meshes, compared across backends (face-level
+// steps too, against Incidence_mesh's native operations).
 #include "backends.h"
 
 #include <genmesh/generators.h>
@@ -17,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <string>
@@ -673,6 +676,185 @@ TYPED_TEST(Local_operations, EraseVertexAndEraseEdge) {
     expect_refused(l, [i](G& x) { return genmesh::erase_edge(E<G>(H<G>(2 * i)), x).has_value(); });
 }
 
+// ---------------------------------------------------------------------------
+// Refusals where the generic edit would leave a face through a vertex twice
+// or a pinched vertex (two border gaps): the same on every backend (the
+// incidence mesh cannot represent either, so it always refused them).
+// ---------------------------------------------------------------------------
+
+// True if some face's cycle passes through a vertex more than once.
+template <class G>
+bool some_face_visits_a_vertex_twice(const G& g) {
+  for (const auto f : faces(g)) {
+    std::vector<std::size_t> vs;
+    for (const auto h : CGAL::halfedges_around_face(halfedge(f, g), g)) vs.push_back(std::size_t(target(h, g)));
+    std::sort(vs.begin(), vs.end());
+    if (std::adjacent_find(vs.begin(), vs.end()) != vs.end()) return true;
+  }
+  return false;
+}
+
+// True if some vertex has two or more border gaps (two border halfedges
+// leave it): a pinch, not a 2-manifold. check_mesh does not see it when the
+// border links join the two fans into one orbit, so count directly.
+template <class G>
+bool some_vertex_is_pinched(const G& g) {
+  std::vector<int> gaps(genmesh::index_bound(genmesh::vertex_index, g), 0);
+  for (const auto h : halfedges(g))
+    if (face(h, g) == boost::graph_traits<G>::null_face() && ++gaps[std::size_t(source(h, g))] > 1) return true;
+  return false;
+}
+
+// A pinched annulus: A = (0,1,2,5,4) and B = (0,4,2,3) share the edge 0-4
+// and touch again at 2, around the triangle T = (4,5,2).
+//
+// 3 ------------- 2
+// |   B        /  /|
+// |         /   /  |      joining A and B across 0-4 (join_face, erase_edge)
+// |      /  T  /   |      would make the face (1,2,5,4,2,3,0) pass through
+// |   4 ----- 5    |      2 twice; so would removing the centre 4 (its link
+// |  /    A        |      is 0,1,2,5,2,3: remove_center_vertex, erase_vertex)
+// 0 ------------- 1
+Polygon_soup pinched_annulus() {
+  return soup_of({P(0, 0), P(4, 0), P(4, 4), P(0, 4), P(1, 2), P(3, 1)}, {{0, 1, 2, 5, 4}, {0, 4, 2, 3}, {4, 5, 2}});
+}
+
+// A triangulated square annulus: outer 0..3, inner hole 4..7.
+//
+// 3 ------------- 2
+// | \           / |
+// |   7 ----- 6   |       the triangle (0,1,5) has its side 0-1 on the outer
+// |   | hole  |   |       border and its corner 5 on the hole: removing it
+// |   4 ----- 5   |       (euler::remove_face), or joining it into the outer
+// | /     _ /   \ |       hole (join_face of the border halfedge 1 -> 0),
+// 0 ------------- 1       would leave 5 with two border gaps (a pinch).
+Polygon_soup triangulated_annulus() {
+  return soup_of({P(0, 0), P(4, 0), P(4, 4), P(0, 4), P(1, 1), P(3, 1), P(3, 3), P(1, 3)},
+                 {{0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}});
+}
+
+// A hexagon F = (0,7,6,1,4,5) holding both ends of the edge 0-1 without it:
+//
+//   8 ----- 2
+//    \    / | \           the triangles (0,1,2) on top and (1,0,3) below
+//     \ /   |   \         the edge 0-1; 0 is inner. Collapsing 0-1 passes
+//      0 ------- 1        the link condition (common neighbours 2 and 3 only)
+//      |\  \3/  /|        but would make F = (1,7,6,1,4,5) pass through 1
+//      | \ / \ / |        twice. Below 0-1: (3,4,1), (3,5,4), (3,0,5); left:
+//      |  5 - 4  |        (7,0,8), (8,0,2).
+//      |    F    |
+//      7 ------- 6
+Polygon_soup hexagon_around_an_edge() {
+  return soup_of({P(0, 0), P(4, 0), P(2, 1), P(2, -1), P(3, -2), P(1, -2), P(4, -4), P(0, -4), P(-2, 0)},
+                 {{0, 1, 2}, {1, 0, 3}, {3, 4, 1}, {3, 5, 4}, {3, 0, 5}, {0, 7, 6, 1, 4, 5}, {7, 0, 8}, {8, 0, 2}});
+}
+
+TYPED_TEST(Local_operations, JoinAndEraseRefuseAFaceThroughAVertexTwice) {
+  using G = TypeParam;
+  G g = make<G>(pinched_annulus());
+  expect_ok(g);
+  for (const auto& [u, v] : {std::pair{0, 4}, std::pair{4, 0}}) {
+    const H<G> h = he(g, u, v);
+    EXPECT_FALSE(genmesh::can_join_face(h, g));
+    EXPECT_FALSE(genmesh::can_erase_edge(edge(h, g), g));
+    expect_refused(g, [h](G& m) { return genmesh::join_face(h, m).has_value(); });
+    expect_refused(g, [h](G& m) { return genmesh::erase_edge(edge(h, m), m).has_value(); });
+  }
+  for (const auto& [u, v] : {std::pair{0, 4}, std::pair{5, 4}, std::pair{2, 4}}) {
+    const H<G> h = he(g, u, v);
+    EXPECT_FALSE(genmesh::can_remove_center_vertex(h, g));
+    expect_refused(g, [h](G& m) { return genmesh::remove_center_vertex(h, m).has_value(); });
+  }
+  EXPECT_FALSE(genmesh::can_erase_vertex(vtx<G>(4), g));
+  expect_refused(g, [](G& m) { return genmesh::erase_vertex(vtx<G>(4), m).has_value(); });
+  // Joining T into A across 4-5 is refused too (they share 5-2 as well), but
+  // into B across 4-2 gives (0,4,5,2,3), each vertex once.
+  expect_refused(g, [](G& m) { return genmesh::join_face(he(m, 4, 5), m).has_value(); });
+  const auto j = genmesh::join_face(he(g, 2, 4), g);
+  ASSERT_TRUE(j);
+  expect_ok(g);
+  EXPECT_FALSE(some_face_visits_a_vertex_twice(g));
+  EXPECT_EQ(genmesh::check_mesh(g).faces, 2u);
+}
+
+TYPED_TEST(Local_operations, CollapseRefusesAFaceThroughAVertexTwice) {
+  using G = TypeParam;
+  G g = make<G>(hexagon_around_an_edge());
+  expect_ok(g);
+  const H<G> h = he(g, 0, 1);
+  EXPECT_TRUE(genmesh::does_satisfy_link_condition(edge(h, g), g));
+  EXPECT_FALSE(genmesh::can_collapse_edge(edge(h, g), g));
+  expect_refused(g, [h](G& m) { return genmesh::collapse_edge(edge(h, m), m).has_value(); });
+  expect_refused(g, [](G& m) {
+    const H<G> x = genmesh::detail::lo::find_halfedge(vtx<G>(1), vtx<G>(0), m);
+    return genmesh::collapse_edge(edge(x, m), m).has_value();
+  });
+  // Still allowed: 0-2 (F does not hold 2).
+  ASSERT_TRUE(genmesh::collapse_edge(edge(he(g, 0, 2), g), g));
+  expect_ok(g);
+  EXPECT_FALSE(some_face_visits_a_vertex_twice(g));
+}
+
+TYPED_TEST(Local_operations, RemoveFaceAndJoinIntoAHoleRefuseAPinch) {
+  using G = TypeParam;
+  G g = make<G>(triangulated_annulus());
+  expect_ok(g);
+  EXPECT_FALSE(genmesh::can_remove_face(he(g, 0, 1), g));
+  expect_refused(g, [](G& m) { return genmesh::euler::remove_face(he(m, 0, 1), m); });
+  expect_refused(g, [](G& m) { return genmesh::euler::remove_face(he(m, 5, 0), m); });
+  EXPECT_FALSE(genmesh::can_join_face(he(g, 1, 0), g));
+  expect_refused(g, [](G& m) { return genmesh::join_face(he(m, 1, 0), m).has_value(); });
+  expect_refused(g, [](G& m) { return genmesh::erase_edge(edge(he(m, 1, 0), m), m).has_value(); });
+  // (0,5,4) has both sides at 0 inner and 0 on the outer border: a pinch too.
+  expect_refused(g, [](G& m) { return genmesh::euler::remove_face(he(m, 0, 5), m); });
+  // From the fan (0,1,2), (0,2,3), (0,3,4) of the border vertex 0, the end
+  // triangle may go, the middle one not (0 would have two border gaps).
+  G f = make<G>(soup_of({P(0, 0), P(2, 0), P(1.5, 1.5), P(0, 2), P(-1.5, 1.5)}, {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}));
+  expect_refused(f, [](G& m) { return genmesh::euler::remove_face(he(m, 2, 3), m); });
+  expect_refused(f, [](G& m) { return genmesh::join_face(he(m, 3, 2), m).has_value(); });
+  ASSERT_TRUE(genmesh::euler::remove_face(he(f, 1, 2), f));
+  expect_ok(f);
+  ASSERT_TRUE(genmesh::join_face(he(f, 3, 0), f)); // (0,3,4) into the hole: leaves (0,2,3)
+  expect_ok(f);
+  EXPECT_EQ(genmesh::check_mesh(f).faces, 1u);
+}
+
+// The edits the predicates above refuse, done raw on a pointer backend: they
+// do leave a face through a vertex twice or an invalid mesh, so the refusals
+// guard something real.
+TYPED_TEST(Local_operations_links, RefusedEditsWouldBreakTheMesh) {
+  using G = TypeParam;
+  namespace lo = genmesh::detail::lo;
+  {
+    G g = make<G>(pinched_annulus());
+    lo::join_face_raw(he(g, 0, 4), g);
+    EXPECT_TRUE(some_face_visits_a_vertex_twice(g));
+  }
+  {
+    G g = make<G>(triangulated_annulus());
+    lo::remove_face_raw(he(g, 0, 1), g);
+    EXPECT_TRUE(some_vertex_is_pinched(g));
+  }
+  {
+    G g = make<G>(triangulated_annulus());
+    lo::join_face_raw(he(g, 1, 0), g);
+    EXPECT_TRUE(some_vertex_is_pinched(g));
+  }
+  {
+    // CGAL::Euler::collapse_edge does it (its link condition holds).
+    G g = make<G>(hexagon_around_an_edge());
+    const E<G> e = edge(he(g, 0, 1), g);
+    ASSERT_TRUE(CGAL::Euler::does_satisfy_link_condition(e, g));
+    CGAL::Euler::collapse_edge(e, g);
+    EXPECT_TRUE(some_face_visits_a_vertex_twice(g));
+  }
+  {
+    G g = make<G>(pinched_annulus());
+    CGAL::Euler::remove_center_vertex(he(g, 0, 4), g);
+    EXPECT_TRUE(some_face_visits_a_vertex_twice(g));
+  }
+}
+
 TYPED_TEST(Local_operations, BevelFaceInsetsAFace) {
   using G = TypeParam;
   //   3 ------- 2        a quad of the cube inset: the face keeps its index
@@ -1204,6 +1386,101 @@ TEST(LocalOperationsAcrossBackends, SameRandomSequenceSameMesh) {
     expect_ok(c);
     EXPECT_EQ(links(a2), links(c)); // next, prev, target, face of every halfedge: the same indices
     EXPECT_EQ(genmesh::to_soup(a), genmesh::to_soup(c));
+  }
+}
+
+// The face-level operations (join_face, split_face, euler::remove_face,
+// euler::add_face as an ear or a whole hole, erase_edge,
+// remove_center_vertex, with add_center_vertex, split_edge and collapse_edge
+// to keep the mesh varied) on polygon meshes with borders and holes. Every
+// step is drawn with the same number of draws, so two meshes in the same
+// state take the same step. Returns the operation and whether it succeeded.
+enum class Face_op { join, erase_edge, split_face, remove_face, add_ear, fill_hole, uncenter, center, split_edge, collapse };
+constexpr int face_op_count = 10;
+
+template <class G>
+std::pair<Face_op, bool> face_step(std::mt19937& rng, G& g) {
+  const std::size_t ne = genmesh::index_bound(genmesh::edge_index, g);
+  const std::uint32_t r_edge = rng(), r_side = rng(), r_pick = rng(), r_k = rng();
+  const E<G> e(H<G>(static_cast<std::uint32_t>(2 * (r_edge % ne))));
+  const unsigned pick = r_pick % 20;
+  const Face_op op = pick < 3    ? Face_op::join
+                     : pick < 5  ? Face_op::erase_edge
+                     : pick < 9  ? Face_op::split_face
+                     : pick < 11 ? Face_op::remove_face
+                     : pick < 13 ? Face_op::add_ear
+                     : pick < 14 ? Face_op::fill_hole
+                     : pick < 16 ? Face_op::uncenter
+                     : pick < 17 ? Face_op::center
+                     : pick < 18 ? Face_op::split_edge
+                                 : Face_op::collapse;
+  if (g.is_removed(e)) return {op, false};
+  const H<G> h = r_side % 2 ? opposite(halfedge(e, g), g) : halfedge(e, g);
+  const auto null_f = boost::graph_traits<G>::null_face();
+  // A border halfedge of e, if any.
+  const H<G> b = face(h, g) == null_f ? h : face(opposite(h, g), g) == null_f ? opposite(h, g) : H<G>();
+  switch (op) {
+  case Face_op::join: return {op, genmesh::join_face(h, g).has_value()};
+  case Face_op::erase_edge: return {op, genmesh::erase_edge(e, g).has_value()};
+  case Face_op::split_face: {
+    H<G> h2 = h;
+    for (std::uint32_t i = 0; i < 2 + r_k % 3; ++i) h2 = next(h2, g);
+    return {op, genmesh::split_face(h, h2, g).has_value()};
+  }
+  case Face_op::remove_face: return {op, genmesh::euler::remove_face(h, g)};
+  case Face_op::add_ear: {
+    if (b == H<G>()) return {op, false};
+    const std::vector<V<G>> ear{source(b, g), target(b, g), target(next(b, g), g)};
+    return {op, genmesh::euler::add_face(ear, g).has_value()};
+  }
+  case Face_op::fill_hole: {
+    if (b == H<G>()) return {op, false};
+    std::vector<V<G>> hole;
+    H<G> x = b;
+    do {
+      hole.push_back(source(x, g));
+      x = next(x, g);
+    } while (x != b && hole.size() <= 8);
+    if (x != b) return {op, false};
+    return {op, genmesh::euler::add_face(hole, g).has_value()};
+  }
+  case Face_op::uncenter: return {op, genmesh::remove_center_vertex(h, g).has_value()};
+  case Face_op::center: return {op, genmesh::add_center_vertex(h, g).has_value()};
+  case Face_op::split_edge: return {op, genmesh::split_edge(h, g).has_value()};
+  case Face_op::collapse: return {op, genmesh::collapse_edge(e, g).has_value()};
+  }
+  return {op, false};
+}
+
+// Halfedge_mesh (generic operations) and Incidence_mesh (native ones) take
+// the same random face-level steps: the same success or refusal at every
+// step, the same soup, and a valid manifold mesh with simple faces and no
+// pinched vertex after every step.
+TEST(LocalOperationsAcrossBackends, FaceOperationsSameRefusalsSameMesh) {
+  int done[face_op_count] = {}, refused[face_op_count] = {};
+  unsigned seed = 21;
+  for (const auto& soup : {genmesh::make_grid_with_hole(6), genmesh::make_torus(6, 5, false), genmesh::make_grid(5, 4)}) {
+    genmesh_test::Halfedge_mesh a = make<genmesh_test::Halfedge_mesh>(soup);
+    genmesh_test::Incidence_mesh c = make<genmesh_test::Incidence_mesh>(soup);
+    std::mt19937 ra(seed), rc(seed);
+    ++seed;
+    for (int i = 0; i < 1500; ++i) {
+      const auto [op, da] = face_step(ra, a);
+      const auto [opc, dc] = face_step(rc, c);
+      ASSERT_EQ(op, opc);
+      ASSERT_EQ(da, dc) << "step " << i << ", operation " << static_cast<int>(op);
+      ++(da ? done : refused)[static_cast<int>(op)];
+      const auto ra_rep = genmesh::check_mesh(a), rc_rep = genmesh::check_mesh(c);
+      ASSERT_TRUE(ra_rep.ok()) << "step " << i << ": " << genmesh::to_string(ra_rep);
+      ASSERT_TRUE(rc_rep.ok()) << "step " << i << ": " << genmesh::to_string(rc_rep);
+      ASSERT_FALSE(some_face_visits_a_vertex_twice(a)) << "step " << i;
+      ASSERT_FALSE(some_vertex_is_pinched(a)) << "step " << i;
+      ASSERT_EQ(genmesh::to_soup(a), genmesh::to_soup(c)) << "step " << i;
+    }
+  }
+  for (int k = 0; k < face_op_count; ++k) {
+    EXPECT_GE(done[k], 10) << "operation " << k;
+    EXPECT_GE(refused[k], 1) << "operation " << k;
   }
 }
 

@@ -27,7 +27,17 @@
 //   mesh on every backend.
 // - No allocation per operation, except add_face, bevel_face, and
 //   bevel_vertex / bevel_edge at vertices of degree above 8, and
-//   triangulate_faces (one list).
+//   triangulate_faces (one list), and the checks of join_face / erase_edge
+//   and remove_center_vertex / erase_vertex when the merged face (or hole)
+//   has more than 32 corners.
+// - Every face visits each vertex once and every border vertex has one
+//   border gap, before and after each operation: join_face, erase_edge,
+//   remove_center_vertex, erase_vertex and collapse_edge refuse where the
+//   edit would make a face (or hole) pass through a vertex twice, and
+//   euler::remove_face and join_face into a hole refuse where a vertex would
+//   be left with two border gaps (a pinch). CGAL::Euler is looser there (it
+//   makes those faces); genmesh refuses, identically on every backend (the
+//   incidence backend cannot represent either, docs/local_operations.md).
 // - A visitor (<genmesh/visitor.h>) is called after each successful change
 //   (its before_* hooks just before); never on a refusal.
 // - The operations are function objects (see the end of this header), so
@@ -351,7 +361,11 @@ bool does_satisfy_link_condition(edge_descriptor_t<G> e, const G& g) {
 
 /// Whether collapse_edge(e, g) would collapse: the faces of e are triangles
 /// (holes allowed on one side), e is not an isolated edge, the link condition
-/// holds, and each opposite corner keeps at least two edges.
+/// holds, each opposite corner keeps at least two edges, and no other face
+/// holds both ends of e (a polygon with p and q as non-adjacent corners: it
+/// would pass through q twice; the link condition does not see it, and
+/// CGAL::Euler::collapse_edge makes that face). Cost: the link condition plus
+/// the sides of p's faces.
 template <MutableFaceGraph G>
 bool can_collapse_edge(edge_descriptor_t<G> e, const G& g) {
   namespace lo = detail::lo;
@@ -360,7 +374,22 @@ bool can_collapse_edge(edge_descriptor_t<G> e, const G& g) {
   if (!top && !bottom) return false;
   if (top && (!lo::triangle_at(pq, g) || lo::vertex_degree(target(next(pq, g), g), g) <= 2)) return false;
   if (bottom && (!lo::triangle_at(qp, g) || lo::vertex_degree(target(next(qp, g), g), g) <= 2)) return false;
-  return does_satisfy_link_condition(e, g);
+  if (!does_satisfy_link_condition(e, g)) return false;
+  // The corners of p's other faces that are not p's neighbours: the targets
+  // from next(next(x)) to before prev(x). A triangle has none (prev(x) ==
+  // next(next(x)); prev shares x's cache line on the pointer backends).
+  const auto q = target(pq, g), ft = face(pq, g), fb = face(qp, g);
+  auto x = qp; // the halfedges into p
+  do {
+    const auto f = face(x, g);
+    if (f != lo::null_f<G>() && f != ft && f != fb) {
+      const auto last = prev(x, g);
+      for (auto y = next(next(x, g), g); y != last; y = next(y, g))
+        if (target(y, g) == q) return false;
+    }
+    x = opposite(next(x, g), g);
+  } while (x != qp);
+  return true;
 }
 
 /// Collapses e into its target, as CGAL::Euler::collapse_edge: with pq =
@@ -434,9 +463,18 @@ std::optional<halfedge_descriptor_t<G>> split_face(halfedge_descriptor_t<G> h1, 
 }
 
 /// Whether join_face(h, g) would join: the two sides of h are different faces
-/// (at most one a hole) that share no other edge (unlike CGAL, which joins
-/// and leaves the merged face on both sides of that edge), and both ends of
-/// h keep at least two edges.
+/// (at most one a hole), both ends of h keep at least two edges, and the
+/// merged cycle stays simple. Unlike CGAL::Euler::join_face, which joins
+/// anyway, genmesh refuses when
+/// - the two sides share another edge (the merged face would lie on both
+///   sides of it);
+/// - they share another vertex (the merged face, or hole, would pass through
+///   it twice);
+/// - face(h) is a hole and another corner of face(opposite(h)) is on a
+///   border: on this hole it would be visited twice, on another one it would
+///   be left with two border gaps (a pinch).
+/// Cost: the two cycles (the hole's too when face(opposite(h)) is the hole),
+/// plus the degrees of face(opposite(h))'s corners when joining into a hole.
 template <MutableFaceGraph G>
 bool can_join_face(halfedge_descriptor_t<G> h, const G& g) {
   namespace lo = detail::lo;
@@ -447,7 +485,7 @@ bool can_join_face(halfedge_descriptor_t<G> h, const G& g) {
   if (lo::degree_below(source(h, g), 3, g) || lo::degree_below(target(h, g), 3, g)) return false;
   for (auto x = next(oh, g); x != oh; x = next(x, g))
     if (face(opposite(x, g), g) == f) return false;
-  return true;
+  return lo::join_keeps_a_simple_cycle(h, g);
 }
 
 /// Removes the edge of h, merging face(opposite(h)) into face(h), as
@@ -515,9 +553,11 @@ std::optional<halfedge_descriptor_t<G>> add_center_vertex(halfedge_descriptor_t<
 }
 
 /// Whether remove_center_vertex(h, g) applies: target(h) is an inner vertex
-/// of degree ≥ 3 and the faces beyond its star are not all one and the same
+/// of degree ≥ 3, the faces beyond its star are not all one and the same
 /// face (which would leave two faces glued back to back, as at a vertex of a
-/// tetrahedron).
+/// tetrahedron), and the link visits each vertex once (else the merged face
+/// would pass through it twice; CGAL::Euler::remove_center_vertex makes that
+/// face). Cost: the sides of v's faces.
 template <MutableFaceGraph G>
 bool can_remove_center_vertex(halfedge_descriptor_t<G> h, const G& g) {
   namespace lo = detail::lo;
@@ -526,11 +566,13 @@ bool can_remove_center_vertex(halfedge_descriptor_t<G> h, const G& g) {
   // Faces across the link: the sides of the star's faces away from v.
   bool found = false, distinct = false, any_hole = false;
   face_descriptor_t<G> first{};
+  lo::Corner_list<G> link;
   auto x = h;
   do {
     // x targets v; walk face(x) from next(x) (leaving v) to prev(x) excluded.
     for (auto y = next(next(x, g), g); y != x; y = next(y, g)) {
       if (target(y, g) == v) break;
+      link.push_back(target(y, g));
       const auto fo = face(opposite(y, g), g);
       if (fo == lo::null_f<G>()) {
         any_hole = true;
@@ -543,7 +585,7 @@ bool can_remove_center_vertex(halfedge_descriptor_t<G> h, const G& g) {
     }
     x = opposite(next(x, g), g);
   } while (x != h);
-  return any_hole || distinct || !found;
+  return (any_hole || distinct || !found) && lo::all_distinct<G>(link);
 }
 
 /// Removes target(h), its edges and faces, leaving one face bounded by its
@@ -702,15 +744,20 @@ std::optional<face_descriptor_t<G>> add_face(const Range& vertices, G& g, Visito
   return f;
 }
 
-/// Whether remove_face(h, g) applies: h is not a border halfedge.
+/// Whether remove_face(h, g) applies: h is not a border halfedge, and no
+/// corner of face(h) that is already on the border has both its sides in the
+/// face inner (removing the face would give that vertex a second border gap,
+/// a pinch; CGAL::Euler::remove_face makes it). Cost: the face's degree plus
+/// its border corners' degrees.
 template <MutableFaceGraph G>
 bool can_remove_face(halfedge_descriptor_t<G> h, const G& g) {
-  return !detail::lo::border(h, g);
+  return !detail::lo::border(h, g) && detail::lo::removal_keeps_border_simple(h, g);
 }
 
 /// Removes face(h), as CGAL::Euler::remove_face: its sides become border;
 /// edges with no face left and vertices with no edge left are removed too.
-/// \returns true, or false (h is a border halfedge: refused).
+/// \returns true, or false (refused, see can_remove_face: h is a border
+/// halfedge, or the removal would pinch a border vertex).
 template <MutableFaceGraph G, class Visitor = Mutation_visitor>
 bool remove_face(halfedge_descriptor_t<G> h, G& g, Visitor&& visitor = {}) {
   if (!can_remove_face(h, g)) return false;
@@ -1075,7 +1122,8 @@ bool can_erase_vertex(vertex_descriptor_t<G> v, const G& g) {
 /// Erases inner vertex v and its edges, merging its faces into one:
 /// remove_center_vertex(halfedge(v, g), g).
 /// \returns the merged face, or nullopt (v isolated, on the border, of
-/// degree < 3, or a tetrahedron vertex).
+/// degree < 3, a tetrahedron vertex, or its link passes through a vertex
+/// twice: see can_remove_center_vertex).
 template <MutableFaceGraph G, class Visitor = Mutation_visitor>
 std::optional<face_descriptor_t<G>> erase_vertex(vertex_descriptor_t<G> v, G& g, Visitor&& visitor = {}) {
   if (!can_erase_vertex(v, g)) return std::nullopt;

@@ -1,6 +1,6 @@
 // genmesh/detail/local_operations_primitives.h — unchecked building blocks of
 // the local operations: queries (border, degree, halfedge between two
-// vertices) and the raw edits join_face, join_vertex, remove_face and
+// vertices, the vertex-once and no-pinch checks) and the raw edits join_face, join_vertex, remove_face and
 // swap_vertices.
 //
 // The raw edits perform, on any MutableFaceGraph, the same low-level edits in
@@ -12,8 +12,10 @@
 
 #include <genmesh/concepts.h>
 
+#include <boost/container/small_vector.hpp>
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <cstddef>
 
 namespace genmesh::detail::lo {
@@ -121,6 +123,17 @@ H<G> join_face_raw(H<G> h, G& g) {
   return hprev;
 }
 
+/// Sets the target of every halfedge of start's fan (those around
+/// target(start), from start) to v.
+template <class G>
+void retarget_fan(H<G> start, V<G> v, G& g) {
+  H<G> x = start;
+  do {
+    set_target(x, v, g);
+    x = opposite(next(x, g), g);
+  } while (x != start);
+}
+
 /// Merges source(h) into target(h), removing edge(h) and source(h). Both
 /// faces of h must keep at least three sides. Returns prev(opposite(h)).
 template <class G>
@@ -128,11 +141,7 @@ H<G> join_vertex_raw(H<G> h, G& g) {
   const H<G> hop = opposite(h, g);
   const H<G> hprev = prev(hop, g), gprev = prev(h, g), hnext = next(hop, g), gnext = next(h, g);
   const V<G> removed = target(hop, g), v = target(h, g);
-  H<G> x = hop;
-  do {
-    set_target(x, v, g);
-    x = opposite(next(x, g), g);
-  } while (x != hop);
+  retarget_fan(hop, v, g);
   set_next(hprev, hnext, g);
   set_next(gprev, gnext, g);
   set_halfedge(v, gprev, g);
@@ -180,16 +189,8 @@ void remove_face_raw(H<G> h, G& g) {
 template <class G>
 void swap_vertices_raw(V<G> p, V<G> q, G& g) {
   const H<G> hq = halfedge(q, g), hp = halfedge(p, g);
-  H<G> x = hq;
-  do {
-    set_target(x, p, g);
-    x = opposite(next(x, g), g);
-  } while (x != hq);
-  x = hp;
-  do {
-    set_target(x, q, g);
-    x = opposite(next(x, g), g);
-  } while (x != hp);
+  retarget_fan(hq, p, g);
+  retarget_fan(hp, q, g);
   set_halfedge(p, hq, g);
   set_halfedge(q, hp, g);
 }
@@ -214,6 +215,62 @@ bool tetrahedron_at(H<G> h1, const G& g) {
     return false;
   if (!triangle_at(h1, g) || !triangle_at(h4, g) || !triangle_at(h5, g) || !triangle_at(h6, g)) return false;
   return !border(h4, g) && !border(h5, g) && !border(h6, g);
+}
+
+// Vertices of up to this many corners are sorted on the stack; a merged
+// face with more corners allocates once.
+template <class G>
+using Corner_list = boost::container::small_vector<V<G>, 32>;
+
+/// The corners hold no vertex twice (sorts them).
+template <class G>
+bool all_distinct(Corner_list<G>& vs) {
+  std::sort(vs.begin(), vs.end());
+  return std::adjacent_find(vs.begin(), vs.end()) == vs.end();
+}
+
+/// Whether the face (or hole) that join_face_raw(h) leaves visits each vertex
+/// once and, when face(opposite(h)) joins a hole, leaves no vertex with two
+/// border gaps (a pinch). Cost: joining into a hole (h a border halfedge),
+/// face(opposite(h))'s cycle and its corners' degrees; otherwise both
+/// cycles, sorted (the hole's included when opposite(h) is the border side).
+template <class G>
+bool join_keeps_a_simple_cycle(H<G> h, const G& g) {
+  const H<G> oh = opposite(h, g);
+  const V<G> a = target(oh, g), b = target(h, g);
+  if (border(h, g)) {
+    // Another corner of face(oh) on this hole would be visited twice, one on
+    // another hole would be pinched between the two.
+    for (H<G> x = next(oh, g); x != oh; x = next(x, g))
+      if (target(x, g) != a && target(x, g) != b && border_vertex(target(x, g), g)) return false;
+    return true;
+  }
+  Corner_list<G> vs;
+  H<G> x = h;
+  do {
+    if (target(x, g) != a && target(x, g) != b) vs.push_back(target(x, g));
+    x = next(x, g);
+  } while (x != h);
+  x = oh;
+  do {
+    if (target(x, g) != a && target(x, g) != b) vs.push_back(target(x, g));
+    x = next(x, g);
+  } while (x != oh);
+  return all_distinct<G>(vs);
+}
+
+/// Whether removing face(h) (not a hole) leaves no vertex with two border
+/// gaps: no corner on the border may have both its sides in the face inner.
+/// Cost: the face's degree plus its border corners' degrees.
+template <class G>
+bool removal_keeps_border_simple(H<G> h, const G& g) {
+  H<G> x = h;
+  do {
+    const H<G> nx = next(x, g);
+    if (!border(opposite(x, g), g) && !border(opposite(nx, g), g) && border_vertex(target(x, g), g)) return false;
+    x = nx;
+  } while (x != h);
+  return true;
 }
 
 /// Splits face(h1) by a new edge target(h1) → target(h2) (CGAL::Euler::split_face).
