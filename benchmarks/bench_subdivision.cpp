@@ -2,7 +2,7 @@
 // CGAL::Surface_mesh, CGAL::Subdivision_method_3 on Surface_mesh and
 // OpenMesh's uniform subdividers (LoopT, CatmullClarkT, Sqrt3T,
 // ModifiedButterflyT), on armadillo.off (libcgal-demo, 52k triangles: Loop × 3,
-// Catmull-Clark × 2, √3 × 3, butterfly × 3) and on a 1.3M-triangle icosphere
+// Catmull-Clark × 2, √3 × 3, butterfly × 3, midpoint × 3) and on a 1.3M-triangle icosphere
 // (make_icosphere(8); Loop × 1, Catmull-Clark × 1).
 //
 //   genmesh_benchmarks --benchmark_filter=Subdivision --benchmark_repetitions=5
@@ -37,6 +37,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -127,11 +128,30 @@ void openmesh(G& g, int levels) {
   s.detach();
 }
 
+/// An OpenMesh run on mesh type M.
+template <class M>
+struct Om_run {
+  using Mesh = M;
+  std::function<void(M&)> run;
+  void operator()(M& g) const { run(g); }
+};
+
 void register_all() {
   using namespace genmesh;
   namespace sm3 = CGAL::Subdivision_method_3;
   auto reg = [](const std::string& name, auto fn) {
     benchmark::RegisterBenchmark(("Subdivision/" + name).c_str(), fn)->Unit(benchmark::kMillisecond);
+  };
+  // genmesh on both backends, CGAL and OpenMesh: the rows of one case
+  auto reg_case = [&](const std::string& n, Input in, auto genmesh_run, auto cgal_run, const std::string& om_name,
+                      auto om_run) {
+    reg(n + "/genmesh_Halfedge_mesh", [=](benchmark::State& s) { run_case<Halfedge_mesh>(s, in, genmesh_run); });
+    reg(n + "/genmesh_Surface_mesh", [=](benchmark::State& s) { run_case<Surface_mesh>(s, in, genmesh_run); });
+    reg(n + "/CGAL_Surface_mesh", [=](benchmark::State& s) { run_case<Surface_mesh>(s, in, cgal_run); });
+    reg(n + "/OpenMesh_" + om_name, [=](benchmark::State& s) {
+      using Om = std::decay_t<decltype(om_run)>::Mesh;
+      run_case<Om>(s, in, om_run);
+    });
   };
   struct Case {
     const char* name;
@@ -139,40 +159,19 @@ void register_all() {
     int levels;
   };
   for (Case c : {Case{"Loop3", Input::armadillo, 3}, Case{"Loop1_sphere1M", Input::sphere, 1}}) {
-    const std::string n = c.name;
-    const Input in = c.in;
     const int l = c.levels;
-    reg(n + "/genmesh_Halfedge_mesh", [=](benchmark::State& s) {
-      run_case<Halfedge_mesh>(s, in, [=](auto& g) { loop_subdivision(g, {.iterations = l}); });
-    });
-    reg(n + "/genmesh_Surface_mesh", [=](benchmark::State& s) {
-      run_case<Surface_mesh>(s, in, [=](auto& g) { loop_subdivision(g, {.iterations = l}); });
-    });
-    reg(n + "/CGAL_Surface_mesh", [=](benchmark::State& s) {
-      run_case<Surface_mesh>(s, in, [=](auto& g) { sm3::Loop_subdivision(g, CGAL::parameters::number_of_iterations(l)); });
-    });
-    reg(n + "/OpenMesh_LoopT", [=](benchmark::State& s) {
-      run_case<Om_tri>(s, in, [=](auto& g) { openmesh<OpenMesh::Subdivider::Uniform::LoopT>(g, l); });
-    });
+    reg_case(
+        c.name, c.in, [=](auto& g) { loop_subdivision(g, {.iterations = l}); },
+        [=](auto& g) { sm3::Loop_subdivision(g, CGAL::parameters::number_of_iterations(l)); }, "LoopT",
+        Om_run<Om_tri>{[=](Om_tri& g) { openmesh<OpenMesh::Subdivider::Uniform::LoopT>(g, l); }});
   }
   for (Case c : {Case{"CatmullClark2", Input::armadillo, 2}, Case{"CatmullClark1_sphere1M", Input::sphere, 1}}) {
-    const std::string n = c.name;
-    const Input in = c.in;
     const int l = c.levels;
-    reg(n + "/genmesh_Halfedge_mesh", [=](benchmark::State& s) {
-      run_case<Halfedge_mesh>(s, in, [=](auto& g) { catmull_clark_subdivision(g, {.iterations = l}); });
-    });
-    reg(n + "/genmesh_Surface_mesh", [=](benchmark::State& s) {
-      run_case<Surface_mesh>(s, in, [=](auto& g) { catmull_clark_subdivision(g, {.iterations = l}); });
-    });
-    reg(n + "/CGAL_Surface_mesh", [=](benchmark::State& s) {
-      run_case<Surface_mesh>(s, in, [=](auto& g) {
-        sm3::CatmullClark_subdivision(g, CGAL::parameters::number_of_iterations(l));
-      });
-    });
-    reg(n + "/OpenMesh_CatmullClarkT", [=](benchmark::State& s) {
-      run_case<Om_poly>(s, in, [=](auto& g) { openmesh<OpenMesh::Subdivider::Uniform::CatmullClarkT>(g, l); });
-    });
+    reg_case(
+        c.name, c.in, [=](auto& g) { catmull_clark_subdivision(g, {.iterations = l}); },
+        [=](auto& g) { sm3::CatmullClark_subdivision(g, CGAL::parameters::number_of_iterations(l)); },
+        "CatmullClarkT",
+        Om_run<Om_poly>{[=](Om_poly& g) { openmesh<OpenMesh::Subdivider::Uniform::CatmullClarkT>(g, l); }});
   }
   reg("Sqrt3_3/genmesh_Halfedge_mesh", [](benchmark::State& s) {
     run_case<Halfedge_mesh>(s, Input::armadillo, [](auto& g) { sqrt3_subdivision(g, {.iterations = 3}); });
@@ -187,9 +186,21 @@ void register_all() {
   reg("Butterfly3/genmesh_Halfedge_mesh", [](benchmark::State& s) {
     run_case<Halfedge_mesh>(s, Input::armadillo, [](auto& g) { butterfly_subdivision(g, {.iterations = 3}); });
   });
+  reg("Butterfly3/genmesh_Surface_mesh", [](benchmark::State& s) {
+    run_case<Surface_mesh>(s, Input::armadillo, [](auto& g) { butterfly_subdivision(g, {.iterations = 3}); });
+  });
   reg("Butterfly3/OpenMesh_ModifiedButterflyT", [](benchmark::State& s) {
     run_case<Om_tri>(s, Input::armadillo,
                      [](auto& g) { openmesh<OpenMesh::Subdivider::Uniform::ModifiedButterflyT>(g, 3); });
+  });
+  // Midpoint (linear 1-to-4): no CGAL or OpenMesh counterpart on triangles
+  // (CGAL's Linear_mask_3 is for quads, OpenMesh's MidpointT is another
+  // scheme); compare with Loop × 3 above, the same refinement.
+  reg("Midpoint3/genmesh_Halfedge_mesh", [](benchmark::State& s) {
+    run_case<Halfedge_mesh>(s, Input::armadillo, [](auto& g) { midpoint_subdivision(g, {.iterations = 3}); });
+  });
+  reg("Midpoint3/genmesh_Surface_mesh", [](benchmark::State& s) {
+    run_case<Surface_mesh>(s, Input::armadillo, [](auto& g) { midpoint_subdivision(g, {.iterations = 3}); });
   });
 }
 

@@ -816,24 +816,34 @@ struct Scalar_transport {
 TYPED_TEST(Subdivision, VisitorMasksCarryAttributesLikePositions) {
   Polygon_soup bumpy = genmesh::make_grid_with_hole(5);
   for (auto& p : bumpy.points) p.z() = std::sin(3 * p.x()) * std::cos(2 * p.y());
-  const std::vector<std::pair<std::string, Polygon_soup>> cases = {
-      {"icosphere", genmesh::make_icosphere(1)}, {"bumpy annulus", bumpy}, {"torus", genmesh::make_torus(8, 6, true)}};
+  const std::vector<std::pair<std::string, Polygon_soup>> cases = {{"icosphere", genmesh::make_icosphere(1)},
+                                                                   {"bumpy annulus", bumpy},
+                                                                   {"torus", genmesh::make_torus(8, 6, true)},
+                                                                   {"quad torus", genmesh::make_torus(8, 6, false)}};
   for (const auto& [label, soup] : cases)
-    for (bool loop : {true, false})
+    for (Scheme scheme : {Scheme::loop, Scheme::catmull_clark, Scheme::butterfly, Scheme::midpoint})
       for (bool creases : {false, true}) {
-        SCOPED_TRACE(label + (loop ? " / Loop" : " / Catmull-Clark") + (creases ? " / creases + corner" : ""));
+        const bool smoothing = scheme == Scheme::loop || scheme == Scheme::catmull_clark;
+        if ((creases && !smoothing) || (takes_triangles_only(scheme) && !all_triangles(soup))) continue;
+        SCOPED_TRACE(label + " / " + name(scheme) + (creases ? " / creases + corner" : ""));
         auto run_on = [&](auto& g) {
           Scalar_transport t;
           for (const auto& p : soup.points) t.value.push_back(linear(p));
           const auto sharp = creases ? sharpness_where(g, [](std::size_t v) { return v < 6; }, 0.5)
                                      : std::vector<double>{};
           const std::vector<std::uint32_t> corners = creases ? std::vector<std::uint32_t>{7} : std::vector<std::uint32_t>{};
-          if (loop)
+          switch (scheme) {
+          case Scheme::loop:
             genmesh::loop_subdivision(
                 g, {.iterations = 2, .crease_sharpness = sharp, .corners = corners, .visitor = t.visitor()});
-          else
+            break;
+          case Scheme::catmull_clark:
             genmesh::catmull_clark_subdivision(
                 g, {.iterations = 2, .crease_sharpness = sharp, .corners = corners, .visitor = t.visitor()});
+            break;
+          case Scheme::butterfly: genmesh::butterfly_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
+          default: genmesh::midpoint_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
+          }
           return t;
         };
         auto g = mesh_of<TypeParam>(soup);

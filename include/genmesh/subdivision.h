@@ -6,9 +6,11 @@
 // (genmesh::Halfedge_mesh, CGAL::Surface_mesh, ...), returning a
 // genmesh::Subdivision_result {levels_done, vertices, faces}. Every level
 // computes all new positions from the old mesh first, then refines the
-// topology — in place for Loop and Catmull-Clark (detail/in_place.h), through
-// a rebuilt mesh for the others — numbered deterministically, so every
-// backend gives the same mesh. See docs/subdivision.md.
+// topology — in place for Loop, Catmull-Clark, butterfly and midpoint on
+// triangles (detail/in_place.h), through a rebuilt mesh for √3, Doo-Sabin and
+// midpoint on other faces (their levels do not keep the old edges, or mix
+// two cuts) — numbered deterministically, so every backend gives the same
+// mesh. See docs/subdivision.md.
 #pragma once
 
 #include <genmesh/subdivision/butterfly.h>

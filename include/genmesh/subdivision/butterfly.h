@@ -16,14 +16,21 @@
 // otherwise the eight-point mask, a missing wing vertex replaced by its
 // reflection p + q − o across the wing edge (p, q), which keeps linear
 // precision.
-// Numbering: old vertices, then edge points in edge iteration order (as Loop).
+// Refinement: in place, the 1-to-4 refinement of Loop (see
+// <genmesh/subdivision/detail/in_place.h>): old vertices keep their numbers,
+// then one edge point per old edge in first-use order (faces in face order,
+// each from its lowest vertex); old faces keep the middle triangle.
 // Guarantees: identical on every backend; old vertices interpolated exactly;
 // V' = V + E, F' = 4F, Euler characteristic and border loops kept.
-// Limits: triangles only (refused, g unchanged); g's other properties and
-// descriptors do not survive a level.
+// Attributes: .visitor.on_vertex receives every new vertex's mask (an old
+// vertex: itself with weight 1; the weights of an edge point sum to 1 and
+// include the negative wing weights).
+// Limits: triangles only (refused, g unchanged); g's other properties are not
+// refined (new elements get their defaults); a backend without set_next, or a
+// mesh with removed elements, is refined on a Halfedge_mesh copy and rebuilt.
 #pragma once
 
-#include <genmesh/subdivision/detail/refinement.h>
+#include <genmesh/subdivision/detail/in_place.h>
 
 #include <cmath>
 #include <numbers>
@@ -33,93 +40,87 @@ namespace genmesh {
 /// Options of butterfly_subdivision().
 struct Butterfly_options {
   int iterations = 1; ///< levels to apply (≥ 0)
+  /// Attribute transport (masks of every new vertex) and level hooks.
+  Subdivision_visitor visitor = {};
 };
 
 namespace detail::subdivision {
 
-// The wing vertex across the edge of corner c (the face on c's other side),
-// or the reflection of c's face's third vertex when that edge is a border.
-inline Eigen::Vector3d butterfly_wing(const Snapshot& s, std::uint32_t c) {
-  std::uint32_t t = s.corner_twin[c];
-  if (t != k_none) return s.points[s.corner_vertex[s.prev(t)]];
-  return s.points[s.corner_vertex[c]] + s.points[s.head(c)] - s.points[s.corner_vertex[s.prev(c)]];
+/// The weight s_j of a's j-th neighbour (from b on) in the valence-k mask.
+inline double butterfly_weight(std::uint32_t k, std::uint32_t j) {
+  if (k == 3) return j == 0 ? 5.0 / 12.0 : -1.0 / 12.0;
+  if (k == 4) return j == 0 ? 3.0 / 8.0 : (j == 2 ? -1.0 / 8.0 : 0.0);
+  const double t = 2.0 * std::numbers::pi * j / k;
+  return (0.25 + std::cos(t) + 0.5 * std::cos(2.0 * t)) / k;
 }
 
-// Valence-k mask at interior vertex a for the edge of corner c (a → b).
-inline Eigen::Vector3d butterfly_irregular(const Snapshot& s, std::uint32_t c) {
-  const std::uint32_t a = s.corner_vertex[c];
-  const std::uint32_t k = s.valence[a];
-  Eigen::Vector3d p = 0.75 * s.points[a];
-  std::uint32_t x = c;
-  for (std::uint32_t j = 0; j < k; ++j, x = s.rotate_ccw(x)) {
-    double w;
-    if (k == 3) w = j == 0 ? 5.0 / 12.0 : -1.0 / 12.0;
-    else if (k == 4) w = j == 0 ? 3.0 / 8.0 : (j == 2 ? -1.0 / 8.0 : 0.0);
-    else {
-      const double t = 2.0 * std::numbers::pi * j / k;
-      w = (0.25 + std::cos(t) + 0.5 * std::cos(2.0 * t)) / k;
+/// One butterfly level in place on the dense triangle mesh g of counts n.
+template <class G>
+void butterfly_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, const Subdivision_visitor& vis) {
+  using H = halfedge_descriptor_t<G>;
+  const Stars st = stars(g, n[0], {}, {});
+  auto vi = get(vertex_index, g);
+  auto num = [&](auto v) { return static_cast<std::uint32_t>(get(vi, v)); };
+  const auto null_face = boost::graph_traits<G>::null_face();
+  // The wing vertex across edge y (the third corner of the face on y's
+  // other side), or the reflection of y's own third corner when that side
+  // is the border.
+  auto wing = [&](H y, double w, Mask<G>& m) {
+    const H o = opposite(y, g);
+    if (face(o, g) != null_face) return m.add(target(next(o, g), g), w);
+    m.add(source(y, g), w), m.add(target(y, g), w), m.add(target(next(y, g), g), -w);
+  };
+  // The valence-k mask at interior vertex a = source(x), scaled; its
+  // weights computed once per valence, not per edge.
+  std::vector<std::vector<double>> weights_of;
+  auto irregular = [&](H x, double scale, Mask<G>& m) {
+    const std::uint32_t k = st.valence[num(source(x, g))];
+    if (k >= weights_of.size()) weights_of.resize(k + 1);
+    std::vector<double>& s = weights_of[k];
+    if (s.empty())
+      for (std::uint32_t j = 0; j < k; ++j) s.push_back(butterfly_weight(k, j));
+    m.add(source(x, g), 0.75 * scale);
+    H y = x;
+    for (std::uint32_t j = 0; j < k; ++j, y = opposite(prev(y, g), g)) m.add(target(y, g), scale * s[j]);
+  };
+  interpolating_one_to_four_level(g, level, n, vis, [&](H x, Mask<G>& m) {
+    const H o = opposite(x, g);
+    const auto va = source(x, g), vb = target(x, g);
+    const std::uint32_t a = num(va), b = num(vb);
+    if (face(o, g) == null_face) {
+      // four-point rule along the border: o runs b → a in the border cycle
+      if (st.border[a] != 2 || st.border[b] != 2) return m.add(va, 0.5), m.add(vb, 0.5);
+      m.add(va, 9.0 / 16.0), m.add(vb, 9.0 / 16.0);
+      m.add(target(next(o, g), g), -1.0 / 16.0), m.add(source(prev(o, g), g), -1.0 / 16.0);
+      return;
     }
-    p += w * s.points[s.head(x)];
-  }
-  return p;
-}
-
-inline Polygon_soup butterfly_level(const Snapshot& s) {
-  const std::uint32_t nv = static_cast<std::uint32_t>(s.num_vertices());
-  Polygon_soup out;
-  out.points.resize(s.num_vertices() + s.num_edges());
-  std::copy(s.points.begin(), s.points.end(), out.points.begin());
-  for (std::uint32_t e = 0; e < s.num_edges(); ++e) {
-    const std::uint32_t c = s.edge_corner[e], t = s.corner_twin[c];
-    const std::uint32_t a = s.corner_vertex[c], b = s.head(c);
-    const Eigen::Vector3d& pa = s.points[a];
-    const Eigen::Vector3d& pb = s.points[b];
-    Eigen::Vector3d p;
-    if (t == k_none) {
-      // four-point rule along the border (a → b runs against the border cycle)
-      auto other = [&](std::uint32_t v, std::uint32_t not_this) -> std::uint32_t {
-        if (s.border_edges[v] != 2 || s.vertex_corner[v] == k_none) return k_none;
-        auto [x, y] = s.border_neighbours(v);
-        return x == not_this ? y : x;
-      };
-      std::uint32_t a2 = other(a, b), b2 = other(b, a);
-      if (a2 == k_none || b2 == k_none) p = 0.5 * (pa + pb);
-      else p = (9.0 / 16.0) * (pa + pb) - (1.0 / 16.0) * (s.points[a2] + s.points[b2]);
-    } else {
-      const bool ia = !s.is_border_vertex(a) && s.valence[a] != 6;
-      const bool ib = !s.is_border_vertex(b) && s.valence[b] != 6;
-      if (ia && ib) p = 0.5 * (butterfly_irregular(s, c) + butterfly_irregular(s, t));
-      else if (ia) p = butterfly_irregular(s, c);
-      else if (ib) p = butterfly_irregular(s, t);
-      else {
-        const Eigen::Vector3d& pc = s.points[s.corner_vertex[s.prev(c)]];
-        const Eigen::Vector3d& pd = s.points[s.corner_vertex[s.prev(t)]];
-        Eigen::Vector3d wings = butterfly_wing(s, s.next(c)) + butterfly_wing(s, s.prev(c)) +
-                                butterfly_wing(s, s.next(t)) + butterfly_wing(s, s.prev(t));
-        p = 0.5 * (pa + pb) + 0.125 * (pc + pd) - 0.0625 * wings;
-      }
-    }
-    out.points[nv + e] = p;
-  }
-  emit_one_to_four(s, nv, out);
-  return out;
+    const bool ia = !st.is_border(a) && st.valence[a] != 6, ib = !st.is_border(b) && st.valence[b] != 6;
+    if (ia && ib) return irregular(x, 0.5, m), irregular(o, 0.5, m);
+    if (ia) return irregular(x, 1.0, m);
+    if (ib) return irregular(o, 1.0, m);
+    m.add(va, 0.5), m.add(vb, 0.5);
+    m.add(target(next(x, g), g), 0.125), m.add(target(next(o, g), g), 0.125);
+    for (const H y : {next(x, g), prev(x, g), next(o, g), prev(o, g)}) wing(y, -0.0625, m);
+  });
 }
 
 } // namespace detail::subdivision
 
 /// Applies options.iterations levels of modified butterfly subdivision to the
 /// triangle mesh g. Throws genmesh::invalid_input naming the first
-/// non-triangle face, g unchanged, when g is not a triangle mesh or
-/// options.iterations < 0.
+/// non-triangle face, g unchanged, when g is not a triangle mesh,
+/// options.iterations < 0, or an edge has no face on either side.
 template <class G>
   requires detail::subdivision::Subdividable<G>
 Subdivision_result butterfly_subdivision(G& g, const Butterfly_options& options = {}) {
   namespace ds = detail::subdivision;
-  std::vector<double> none;
-  return ds::run_levels(
-      g, options.iterations, "butterfly_subdivision", 3, none,
-      [](const ds::Snapshot& s, int) { return ds::Refined{ds::butterfly_level(s), ds::one_to_four_twins(s)}; },
-      ds::no_half);
+  return ds::run_in_place(
+      g, options.iterations, "butterfly_subdivision", {}, {},
+      [](const auto& m) { return ds::face_counts(m, "butterfly_subdivision", 3); },
+      [&](auto& m, int level, const std::array<std::size_t, 4>& n, std::vector<double>&) {
+        ds::butterfly_level_in_place(m, level, n, options.visitor);
+      },
+      ds::one_to_four_counts);
 }
 
 } // namespace genmesh

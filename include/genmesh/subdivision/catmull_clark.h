@@ -53,27 +53,6 @@ struct Catmull_clark_options {
 
 namespace detail::subdivision {
 
-/// Counts {V, E, F, corners} of g; throws naming a face whose cycle does not close.
-template <class G>
-std::array<std::size_t, 4> polygon_counts(const G& g, const char* scheme) {
-  std::size_t nv = 0, ne = 0, nf = 0, nc = 0, nh = 0;
-  for (auto v : vertices(g)) (void)v, ++nv;
-  for (auto e : edges(g)) (void)e, ++ne;
-  nh = 2 * ne;
-  for (auto f : faces(g)) {
-    const auto h0 = halfedge(f, g);
-    auto h = h0;
-    std::size_t n = 0;
-    do {
-      h = next(h, g);
-      if (++n > nh) throw invalid_input(std::string(scheme) + ": the cycle of face " + std::to_string(nf) + " is corrupt");
-    } while (h != h0);
-    nc += n;
-    ++nf;
-  }
-  return {nv, ne, nf, nc};
-}
-
 inline std::array<std::size_t, 4> quad_split_counts(std::array<std::size_t, 4> n) {
   return {n[0] + n[1] + n[2], 2 * n[1] + n[3], n[3], 4 * n[3]};
 }
@@ -94,7 +73,8 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
   const bool creases = !sharp.empty();
   auto av = append_elements(g, ne + nf, 0, 0);
   // Σ face points per vertex (q), Σ ring neighbours (acc), Σ crease neighbours (ends)
-  std::vector<Vec> q(nv, Vec::Zero()), acc(nv, Vec::Zero()), ends(creases ? nv : 0, Vec::Zero());
+  std::vector<Vec> q(nv, Vec::Zero());
+  Vertex_sums sums{std::vector<Vec>(nv, Vec::Zero()), std::vector<Vec>(creases ? nv : 0, Vec::Zero())};
   std::vector<std::uint32_t> face_begin, face_corner; // for the visitor's masks
   if (vis.on_vertex) face_begin.assign(1, 0), face_corner.reserve(nc);
   std::vector<std::uint32_t> src;
@@ -103,7 +83,6 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
   auto old_target = [&](auto x) { return num(target(x, g)); };
   std::vector<char> border_edge(vis.on_vertex ? ne : 0, 0);
   std::vector<std::uint32_t> edge_faces(vis.on_vertex ? 4 * ne : 0); // a, b, f1, f2 per edge point (masks)
-  const auto null_face = boost::graph_traits<G>::null_face();
   auto ei = get(edge_index, g);
   // One pass over the faces (face order, each from its lowest vertex): face
   // points, and the edge points numbered by first use (the face of the first
@@ -128,47 +107,25 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
     }
     for (const auto x : xs) {
       const std::size_t k = static_cast<std::size_t>(get(ei, edge(x, g)));
-      const auto op = opposite(x, g);
-      // A second use proves the edge interior. A first use reads the border
-      // flag only where it matters at once (creases, the visitor); the border
-      // edges' points and the border vertices' rings are done after the pass.
-      const bool seen = number[k] != k_none;
-      const bool border = !seen && ((creases && sharp[k] > 0) || vis.on_vertex) && face(op, g) == null_face;
-      const auto [we, ww] = edge_weights(0.25, 0.25, border, creases ? sharp[k] : 0.0);
-      if (seen) { // second use: the other face point
-        if (ww != 0) {
-          const auto m = av.vertex(number[k]);
-          put(pts, m, from_eigen<point_t<G>>(Vec(to_eigen(get(pts, m)) + ww * c)));
-        }
+      const Edge_use use = edge_use(g, x, k, number, sharp, static_cast<bool>(vis.on_vertex));
+      const double s = creases ? sharp[k] : 0.0;
+      const auto [we, ww] = edge_weights(0.25, 0.25, use.border, s);
+      if (use.seen) { // second use: the other face point
+        add_to_point<G>(pts, av.vertex(number[k]), ww, c);
         continue;
       }
       const std::uint32_t i = number[k] = used++;
-      const auto va = source(x, g), vb = target(x, g);
-      const std::uint32_t a = num(va), b = num(vb);
-      const Vec pa = to_eigen(get(pts, va)), pb = to_eigen(get(pts, vb));
-      Vec p = we * (pa + pb);
-      if (ww != 0) p += ww * c;
-      put(pts, av.vertex(i), from_eigen<point_t<G>>(p));
-      if (!st.is_border(a)) acc[a] += pb;
-      if (!st.is_border(b)) acc[b] += pa;
-      if (creases && !border && sharp[k] > 0) ends[a] += pb, ends[b] += pa;
+      first_edge_point(g, pts, x, av.vertex(i), we, ww, c, st, use.border, s, sums);
       if (vis.on_vertex) {
-        border_edge[i] = border;
-        edge_faces[4 * i] = a, edge_faces[4 * i + 1] = b, edge_faces[4 * i + 2] = static_cast<std::uint32_t>(j);
-        edge_faces[4 * i + 3] = border ? k_none : static_cast<std::uint32_t>(get(fi, face(op, g)));
+        border_edge[i] = use.border;
+        edge_faces[4 * i] = num(source(x, g)), edge_faces[4 * i + 1] = num(target(x, g));
+        edge_faces[4 * i + 2] = static_cast<std::uint32_t>(j);
+        edge_faces[4 * i + 3] = use.border ? k_none : static_cast<std::uint32_t>(get(fi, face(opposite(x, g), g)));
       }
     }
     ++j;
   }
-  // border edges: midpoints, and the border neighbours of border vertices
-  // (two per vertex where the ring is used: their sum does not depend on the order)
-  for_each_old_edge(g, [&](std::uint32_t k, auto h, std::uint32_t a, std::uint32_t b, bool border) {
-    if (!border) return;
-    const Vec pa = to_eigen(get(pts, source(h, g))), pb = to_eigen(get(pts, target(h, g)));
-    put(pts, av.vertex(number[k]), from_eigen<point_t<G>>(Vec(0.5 * (pa + pb))));
-    acc[a] += pb;
-    acc[b] += pa;
-  });
+  border_edge_points(g, pts, av, number, sums.acc);
   auto add_face_mask = [&](std::size_t jf, double weight, std::vector<std::uint32_t>& s, std::vector<double>& ws) {
     const std::uint32_t b = face_begin[jf], e = face_begin[jf + 1];
     for (std::uint32_t c = b; c < e; ++c) s.push_back(face_corner[c]), ws.push_back(weight / double(e - b));
@@ -196,18 +153,15 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
       const double val = st.valence[i];
       const Vertex_rule smooth = val == 0 ? Vertex_rule{} : Vertex_rule{(val - 2.0) / val, 1.0 / (val * val), 0, 1.0 / (val * val)};
       const Vertex_rule r = vertex_rule(st, i, o.boundary, smooth);
-      Vec p = r.self * to_eigen(get(pts, v)) + r.ring * acc[i];
+      Vec p = r.self * to_eigen(get(pts, v)) + r.ring * sums.acc[i];
       if (r.faces != 0) p += r.faces * q[i];
-      if (r.ends != 0) p += r.ends * ends[i];
-      acc[i] = p;
+      if (r.ends != 0) p += r.ends * sums.ends[i];
+      sums.acc[i] = p;
       if (vis.on_vertex) rules[i] = r;
       ++i;
     }
   }
   if (vis.on_vertex) {
-    const Neighbours nb = neighbours(g, st, number);
-    std::vector<double> sharp_by_number(creases ? ne : 0);
-    for (std::size_t k = 0; k < sharp_by_number.size(); ++k) sharp_by_number[number[k]] = sharp[k];
     // the faces around each old vertex, from the corner lists
     std::vector<std::uint32_t> vf_begin(nv + 1, 0), vf(face_corner.size());
     for (std::uint32_t c : face_corner) ++vf_begin[c + 1];
@@ -215,30 +169,16 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
     std::vector<std::uint32_t> fill(vf_begin.begin(), vf_begin.end() - 1);
     for (std::uint32_t jf = 0; jf < nf; ++jf)
       for (std::uint32_t c = face_begin[jf]; c < face_begin[jf + 1]; ++c) vf[fill[face_corner[c]]++] = jf;
-    for (std::uint32_t v = 0; v < nv; ++v)
-      emit_vertex_mask<G>(
-          vis, st, nb, rules[v], v, sharp_by_number, [&](std::uint32_t k) { return border_edge[k] != 0; },
-          [&](std::uint32_t x, double weight, std::vector<std::uint32_t>& s, std::vector<double>& ws) {
-            for (std::uint32_t i = vf_begin[x]; i < vf_begin[x + 1]; ++i) add_face_mask(vf[i], weight, s, ws);
-          },
-          src, w);
+    emit_vertex_masks(g, vis, st, number, sharp, border_edge, rules,
+                      [&](std::uint32_t x, double weight, std::vector<std::uint32_t>& s, std::vector<double>& ws) {
+                        for (std::uint32_t i = vf_begin[x]; i < vf_begin[x + 1]; ++i)
+                          add_face_mask(vf[i], weight, s, ws);
+                      });
   }
-  {
-    std::uint32_t i = 0;
-    for (auto v : vertices(g)) {
-      if (i == nv) break;
-      put(pts, v, from_eigen<point_t<G>>(acc[i++]));
-    }
-  }
-  std::vector<Vec>().swap(acc);
+  write_old_positions(g, pts, sums.acc);
+  sums = Vertex_sums{};
   std::vector<Vec>().swap(q);
-  std::vector<Vec>().swap(ends);
-  if (creases) {
-    std::vector<double> child(2 * ne + nc, 0.0);
-    for (std::size_t k = 0; k < ne; ++k)
-      child[k] = child[ne + number[k]] = sharp[k] > 0 ? std::max(0.0, sharp[k] - 1.0) : 0.0;
-    sharp = std::move(child);
-  }
+  decrement_creases(sharp, number, 2 * ne + nc);
   auto ae = append_elements(g, 0, ne + nc, nc - nf);
   split_edges(g, av, ae, nv, ne, number);
   cut_polygons(g, av, ae, nv, ne, nf);
@@ -258,17 +198,13 @@ Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options& 
   namespace ds = detail::subdivision;
   Subdivision_result r = ds::run_in_place(
       g, options.iterations, "catmull_clark_subdivision", options.crease_sharpness, options.corners,
-      [](const auto& m) { return ds::polygon_counts(m, "catmull_clark_subdivision"); },
+      [](const auto& m) { return ds::face_counts(m, "catmull_clark_subdivision", 0); },
       [&](auto& m, int level, const std::array<std::size_t, 4>& n, std::vector<double>& sharp) {
         ds::catmull_clark_level_in_place(m, level, n, sharp, options);
       },
       ds::quad_split_counts);
   if (options.limit && options.iterations > 0) {
-    std::vector<char> corner(r.vertices, 0);
-    for (std::uint32_t c : options.corners) corner[c] = 1;
-    ds::move_to_limit(g, r.edge_sharpness, [&](const ds::Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
-      if (corner[v]) return s.points[v];
-      if (s.is_border_vertex(v)) return ds::border_limit_point(s, v, options.boundary);
+    auto interior = [&](const ds::Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
       const double n = s.valence[v];
       Eigen::Vector3d edges = Eigen::Vector3d::Zero(), diagonals = Eigen::Vector3d::Zero();
       std::uint32_t c = s.vertex_corner[v];
@@ -277,7 +213,8 @@ Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options& 
         diagonals += s.points[s.head(s.next(c))]; // the quad's corner opposite v
       }
       return (n * n * s.points[v] + 4.0 * edges + diagonals) / (n * (n + 5.0));
-    });
+    };
+    ds::move_to_limit(g, r, options.corners, options.boundary, interior);
   }
   return r;
 }

@@ -17,7 +17,9 @@
 // F' = F + E + V, the Euler characteristic is kept and every new vertex has
 // valence 4; the border loop count is kept. Equal to CGAL's
 // DooSabin_subdivision on closed meshes.
-// Limits: g's other properties and descriptors do not survive a level.
+// Limits: g's other properties and descriptors do not survive a level: no
+// old vertex or edge survives as an element, so the level is not refined in
+// place (as Loop's is) but goes through snapshot → refined soup → rebuild.
 #pragma once
 
 #include <genmesh/subdivision/detail/refinement.h>

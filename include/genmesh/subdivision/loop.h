@@ -76,32 +76,6 @@ inline double loop_beta(std::uint32_t n, Loop_weights w) {
   return (5.0 / 8.0 - c * c) / n;
 }
 
-/// Counts {V, E, F, corners} of g; throws naming the first face that is not a triangle.
-template <class G>
-std::array<std::size_t, 4> triangle_counts(const G& g, const char* scheme) {
-  std::size_t nv = 0, ne = 0, nf = 0;
-  for (auto v : vertices(g)) (void)v, ++nv;
-  for (auto e : edges(g)) (void)e, ++ne;
-  for (auto f : faces(g)) {
-    const auto h0 = halfedge(f, g);
-    auto h = h0;
-    std::size_t n = 0;
-    do {
-      h = next(h, g);
-      if (++n > 2 * ne) throw invalid_input(std::string(scheme) + ": the cycle of face " + std::to_string(nf) + " is corrupt");
-    } while (h != h0);
-    if (n != 3)
-      throw invalid_input(std::string(scheme) + ": face " + std::to_string(nf) + " has " + std::to_string(n) +
-                          " sides; the scheme takes only 3-sided faces (the mesh is unchanged)");
-    ++nf;
-  }
-  return {nv, ne, nf, 3 * nf};
-}
-
-inline std::array<std::size_t, 4> one_to_four_counts(std::array<std::size_t, 4> n) {
-  return {n[0] + n[1], 2 * n[1] + 3 * n[2], 4 * n[2], 12 * n[2]};
-}
-
 /// One Loop level in place on the dense triangle mesh g of counts n.
 template <class G>
 void loop_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
@@ -114,75 +88,44 @@ void loop_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, s
   const Stars st = stars(g, nv, sharp, o.corners);
   const bool creases = !sharp.empty();
   auto av = append_elements(g, ne, 0, 0);
-  std::vector<Vec> acc(nv, Vec::Zero()), ends(creases ? nv : 0, Vec::Zero());
+  Vertex_sums sums{std::vector<Vec>(nv, Vec::Zero()), std::vector<Vec>(creases ? nv : 0, Vec::Zero())};
   std::vector<char> border_edge(vis.on_vertex ? ne : 0, 0);
   std::vector<std::uint32_t> src;
   std::vector<double> w;
   auto vi = get(vertex_index, g);
   auto ei = get(edge_index, g);
   auto num = [&](auto v) { return static_cast<std::uint32_t>(get(vi, v)); };
-  const auto null_face = boost::graph_traits<G>::null_face();
   // Edge points, numbered by first use (faces in face order, each from its
   // lowest vertex), so that the numbering and every sum are canonical.
   std::vector<std::uint32_t> number(ne, k_none);
   std::uint32_t used = 0;
-  std::size_t j = 0;
-  for (auto f : faces(g)) {
-    if (j++ == nf) break;
-    const auto x0 = halfedge(f, g), x1 = next(x0, g), x2 = next(x1, g);
-    halfedge_descriptor_t<G> xs[3] = {x0, x1, x2};
-    const std::uint32_t t0 = num(target(x0, g)), t1 = num(target(x1, g)), t2 = num(target(x2, g));
-    if (t0 < t1 && t0 < t2) std::rotate(xs, xs + 1, xs + 3);
-    else if (t1 < t0 && t1 < t2) std::rotate(xs, xs + 2, xs + 3);
+  for_each_canonical_triangle(g, nf, [&](std::size_t, auto& xs) {
     for (int t = 0; t < 3; ++t) {
       const auto x = xs[t];
       const std::size_t k = static_cast<std::size_t>(get(ei, edge(x, g)));
-      const auto op = opposite(x, g);
-      // A second use proves the edge interior. A first use reads the border
-      // flag only where it matters at once (creases, the visitor); the border
-      // edges' points and the border vertices' rings are done after the pass.
-      const bool seen = number[k] != k_none;
-      const bool border = !seen && ((creases && sharp[k] > 0) || vis.on_vertex) && face(op, g) == null_face;
-      const auto [we, ww] = edge_weights(0.375, 0.125, border, creases ? sharp[k] : 0.0);
+      const Edge_use use = edge_use(g, x, k, number, sharp, static_cast<bool>(vis.on_vertex));
+      const double s = creases ? sharp[k] : 0.0;
+      const auto [we, ww] = edge_weights(0.375, 0.125, use.border, s);
       const auto vc = target(xs[(t + 1) % 3], g); // this face's wing
-      if (seen) { // second use: the other wing
-        if (ww != 0) {
-          const auto m = av.vertex(number[k]);
-          put(pts, m, from_eigen<point_t<G>>(Vec(to_eigen(get(pts, m)) + ww * to_eigen(get(pts, vc)))));
-        }
+      if (use.seen) { // second use: the other wing
+        add_to_point<G>(pts, av.vertex(number[k]), ww, to_eigen(get(pts, vc)));
         continue;
       }
       const std::uint32_t i = number[k] = used++;
-      const auto va = source(x, g), vb = target(x, g);
-      const std::uint32_t a = num(va), b = num(vb);
-      const Vec pa = to_eigen(get(pts, va)), pb = to_eigen(get(pts, vb));
-      Vec p = we * (pa + pb);
-      if (ww != 0) p += ww * to_eigen(get(pts, vc));
-      put(pts, av.vertex(i), from_eigen<point_t<G>>(p));
-      if (!st.is_border(a)) acc[a] += pb;
-      if (!st.is_border(b)) acc[b] += pa;
-      if (creases && !border && sharp[k] > 0) ends[a] += pb, ends[b] += pa;
+      first_edge_point(g, pts, x, av.vertex(i), we, ww, to_eigen(get(pts, vc)), st, use.border, s, sums);
       if (vis.on_vertex) {
-        border_edge[i] = border;
-        src.assign({a, b});
+        border_edge[i] = use.border;
+        src.assign({num(source(x, g)), num(target(x, g))});
         w.assign({we, we});
         if (ww != 0) {
-          const auto vd = target(next(op, g), g);
+          const auto vd = target(next(opposite(x, g), g), g);
           src.push_back(num(vc)), src.push_back(num(vd)), w.push_back(ww), w.push_back(ww);
         }
         vis.on_vertex(static_cast<std::uint32_t>(nv + i), src, w);
       }
     }
-  }
-  // border edges: midpoints, and the border neighbours of border vertices
-  // (two per vertex where the ring is used: their sum does not depend on the order)
-  for_each_old_edge(g, [&](std::uint32_t k, auto h, std::uint32_t a, std::uint32_t b, bool border) {
-    if (!border) return;
-    const Vec pa = to_eigen(get(pts, source(h, g))), pb = to_eigen(get(pts, target(h, g)));
-    put(pts, av.vertex(number[k]), from_eigen<point_t<G>>(Vec(0.5 * (pa + pb))));
-    acc[a] += pb;
-    acc[b] += pa;
   });
+  border_edge_points(g, pts, av, number, sums.acc);
   std::vector<Vertex_rule> rules(vis.on_vertex ? nv : 0);
   {
     std::array<double, 64> beta_of; // β by valence (a cosine per vertex is measurable)
@@ -194,39 +137,18 @@ void loop_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, s
       if (val < beta_of.size() && beta_of[val] < 0) beta_of[val] = loop_beta(val, o.weights);
       const double beta = val == 0 ? 0.0 : val < beta_of.size() ? beta_of[val] : loop_beta(val, o.weights);
       const Vertex_rule r = vertex_rule(st, i, o.boundary, {1.0 - val * beta, beta, 0, 0});
-      Vec p = r.self * to_eigen(get(pts, v)) + r.ring * acc[i];
-      if (r.ends != 0) p += r.ends * ends[i];
-      acc[i] = p;
+      Vec p = r.self * to_eigen(get(pts, v)) + r.ring * sums.acc[i];
+      if (r.ends != 0) p += r.ends * sums.ends[i];
+      sums.acc[i] = p;
       if (vis.on_vertex) rules[i] = r;
       ++i;
     }
   }
-  if (vis.on_vertex) {
-    const Neighbours nb = neighbours(g, st, number);
-    std::vector<double> sharp_by_number(creases ? ne : 0);
-    for (std::size_t k = 0; k < sharp_by_number.size(); ++k) sharp_by_number[number[k]] = sharp[k];
-    for (std::uint32_t v = 0; v < nv; ++v)
-      emit_vertex_mask<G>(vis, st, nb, rules[v], v, sharp_by_number,
-                          [&](std::uint32_t k) { return border_edge[k] != 0; }, [](auto...) {}, src, w);
-  }
-  {
-    std::uint32_t i = 0;
-    for (auto v : vertices(g)) {
-      if (i == nv) break;
-      put(pts, v, from_eigen<point_t<G>>(acc[i++]));
-    }
-  }
-  std::vector<Vec>().swap(acc);
-  std::vector<Vec>().swap(ends);
-  if (creases) {
-    std::vector<double> child(2 * ne + 3 * nf, 0.0);
-    for (std::size_t k = 0; k < ne; ++k)
-      child[k] = child[ne + number[k]] = sharp[k] > 0 ? std::max(0.0, sharp[k] - 1.0) : 0.0;
-    sharp = std::move(child);
-  }
-  auto ae = append_elements(g, 0, ne + 3 * nf, 3 * nf);
-  split_edges(g, av, ae, nv, ne, number);
-  cut_triangles(g, ae, nv, ne, nf);
+  if (vis.on_vertex) emit_vertex_masks(g, vis, st, number, sharp, border_edge, rules, [](auto...) {});
+  write_old_positions(g, pts, sums.acc);
+  sums = Vertex_sums{};
+  decrement_creases(sharp, number, 2 * ne + 3 * nf);
+  refine_one_to_four(g, av, nv, ne, nf, number);
   if (vis.on_level_end) vis.on_level_end(level);
 }
 
@@ -245,24 +167,21 @@ Subdivision_result loop_subdivision(G& g, const Loop_options& options = {}) {
   namespace ds = detail::subdivision;
   Subdivision_result r = ds::run_in_place(
       g, options.iterations, "loop_subdivision", options.crease_sharpness, options.corners,
-      [](const auto& m) { return ds::triangle_counts(m, "loop_subdivision"); },
+      [](const auto& m) { return ds::face_counts(m, "loop_subdivision", 3); },
       [&](auto& m, int level, const std::array<std::size_t, 4>& n, std::vector<double>& sharp) {
         ds::loop_level_in_place(m, level, n, sharp, options);
       },
       ds::one_to_four_counts);
   if (options.limit && options.iterations > 0) {
-    std::vector<char> corner(r.vertices, 0);
-    for (std::uint32_t c : options.corners) corner[c] = 1;
-    ds::move_to_limit(g, r.edge_sharpness, [&](const ds::Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
-      if (corner[v]) return s.points[v];
-      if (s.is_border_vertex(v)) return ds::border_limit_point(s, v, options.boundary);
+    auto interior = [&](const ds::Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
       const std::uint32_t n = s.valence[v];
       Eigen::Vector3d ring = Eigen::Vector3d::Zero();
       std::uint32_t c = s.vertex_corner[v];
       for (std::uint32_t k = 0; k < n; ++k, c = s.rotate_ccw(c)) ring += s.points[s.head(c)];
       const double gamma = 1.0 / (3.0 / (8.0 * ds::loop_beta(n, options.weights)) + n);
       return (1.0 - n * gamma) * s.points[v] + gamma * ring;
-    });
+    };
+    ds::move_to_limit(g, r, options.corners, options.boundary, interior);
   }
   return r;
 }

@@ -5,34 +5,54 @@
 // Catmull-Clark, without smoothing: CGAL's Linear_mask_3 on quads,
 // pmp-library's linear subdivision on triangles). Old vertices do not move, so
 // the surface keeps its shape exactly; the border is refined likewise.
-// Numbering: old vertices, edge midpoints in edge iteration order, then the
-// centroids of the non-triangle faces in face iteration order.
+// Refinement: a triangle mesh is refined in place with Loop's 1-to-4
+// refinement (see <genmesh/subdivision/detail/in_place.h>; old vertices keep
+// their numbers, then the midpoints in first-use order: faces in face order,
+// each from its lowest vertex). A mesh with other faces goes through
+// snapshot → refined soup → rebuild: old vertices, midpoints in edge
+// iteration order, then the centroids of the non-triangle faces in face
+// iteration order.
 // Guarantees: identical on every backend; V' = V + E + (faces with > 3
 // sides), F' = 4 (triangles) + Σ deg (others); Euler characteristic and
 // border loops kept.
-// Limits: g's other properties and descriptors do not survive a level.
+// Attributes: .visitor.on_vertex receives every new vertex's mask (an old
+// vertex itself, a midpoint its two ends, a centroid its corners).
+// Limits: g's other properties are not refined in place (new elements get
+// their defaults) and do not survive a rebuild (mesh with non-triangles, a
+// backend without set_next, a mesh with removed elements).
 #pragma once
 
-#include <genmesh/subdivision/detail/refinement.h>
+#include <genmesh/subdivision/detail/in_place.h>
 
 namespace genmesh {
 
 /// Options of midpoint_subdivision().
 struct Midpoint_options {
   int iterations = 1; ///< levels to apply (≥ 0)
+  /// Attribute transport (masks of every new vertex) and level hooks.
+  Subdivision_visitor visitor = {};
 };
 
 namespace detail::subdivision {
 
-inline Polygon_soup midpoint_level(const Snapshot& s) {
+/// One level through a refined soup (any polygons); the visitor gets the
+/// masks in the soup's point order (the rebuilt mesh's vertex order).
+inline Polygon_soup midpoint_level(const Snapshot& s, const Subdivision_visitor& vis) {
   const std::uint32_t nv = static_cast<std::uint32_t>(s.num_vertices());
   const std::uint32_t ne = static_cast<std::uint32_t>(s.num_edges());
   Polygon_soup out;
   out.points.reserve(std::size_t(nv) + ne + s.num_faces());
   out.points = s.points;
+  std::vector<std::uint32_t> src;
+  std::vector<double> w;
+  if (vis.on_vertex) {
+    const double one = 1.0;
+    for (std::uint32_t v = 0; v < nv; ++v) vis.on_vertex(v, {&v, 1}, {&one, 1});
+  }
   for (std::uint32_t e = 0; e < ne; ++e) {
-    std::uint32_t c = s.edge_corner[e];
-    out.points.push_back(0.5 * (s.points[s.corner_vertex[c]] + s.points[s.head(c)]));
+    const std::uint32_t c = s.edge_corner[e], a = s.corner_vertex[c], b = s.head(c);
+    out.points.push_back(0.5 * (s.points[a] + s.points[b]));
+    if (vis.on_vertex) src.assign({a, b}), w.assign({0.5, 0.5}), vis.on_vertex(nv + e, src, w);
   }
   for (std::uint32_t f = 0; f < s.num_faces(); ++f) {
     const std::uint32_t c0 = s.face_begin[f];
@@ -47,11 +67,26 @@ inline Polygon_soup midpoint_level(const Snapshot& s) {
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
       for (std::uint32_t c = c0; c < s.face_begin[f + 1]; ++c) sum += s.points[s.corner_vertex[c]];
       const Polygon_soup::Index center = out.add_point(sum / double(s.face_size(f)));
+      if (vis.on_vertex) {
+        src.assign(s.corner_vertex.begin() + c0, s.corner_vertex.begin() + s.face_begin[f + 1]);
+        w.assign(src.size(), 1.0 / double(src.size()));
+        vis.on_vertex(static_cast<std::uint32_t>(center), src, w);
+      }
       for (std::uint32_t c = c0; c < s.face_begin[f + 1]; ++c)
         out.add_face({s.corner_vertex[c], nv + s.corner_edge[c], center, nv + s.corner_edge[s.prev(c)]});
     }
   }
   return out;
+}
+
+/// Whether every face of g is a triangle (the in-place 1-to-4 applies).
+template <class G>
+bool all_triangles(const G& g) {
+  for (auto f : faces(g)) {
+    const auto h = halfedge(f, g);
+    if (next(next(next(h, g), g), g) != h) return false;
+  }
+  return true;
 }
 
 } // namespace detail::subdivision
@@ -63,10 +98,32 @@ template <class G>
   requires detail::subdivision::Subdividable<G>
 Subdivision_result midpoint_subdivision(G& g, const Midpoint_options& options = {}) {
   namespace ds = detail::subdivision;
+  const Subdivision_visitor& vis = options.visitor;
+  if (ds::all_triangles(g))
+    return ds::run_in_place(
+        g, options.iterations, "midpoint_subdivision", {}, {},
+        [](const auto& m) { return ds::face_counts(m, "midpoint_subdivision", 3); },
+        [&](auto& m, int level, const std::array<std::size_t, 4>& n, std::vector<double>&) {
+          ds::interpolating_one_to_four_level(m, level, n, vis, [&](auto x, auto& mask) {
+            mask.add(source(x, m), 0.5), mask.add(target(x, m), 0.5);
+          });
+        },
+        ds::one_to_four_counts);
   std::vector<double> none;
-  return ds::run_levels(
-      g, options.iterations, "midpoint_subdivision", 0, none,
-      [](const ds::Snapshot& s, int) { return ds::Refined{ds::midpoint_level(s), {}}; }, ds::no_half);
+  Subdivision_result r = ds::run_levels(
+      g, options.iterations, "midpoint_subdivision", 0, none, [&](const ds::Snapshot& s, int level) {
+        // the hooks of a level chained without a rebuild (see run_levels) run on its soup
+        if (level > 0 && vis.on_level_end) vis.on_level_end(level - 1);
+        if (vis.on_level_begin) {
+          std::size_t added = s.num_edges();
+          for (std::uint32_t f = 0; f < s.num_faces(); ++f) added += s.face_size(f) != 3;
+          vis.on_level_begin(level, s.num_vertices(), s.num_vertices() + added);
+        }
+        return ds::Refined{ds::midpoint_level(s, vis), {}};
+      },
+      ds::no_half);
+  if (options.iterations > 0 && vis.on_level_end) vis.on_level_end(options.iterations - 1);
+  return r;
 }
 
 } // namespace genmesh

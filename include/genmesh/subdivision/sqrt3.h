@@ -19,7 +19,10 @@
 // Sqrt3_subdivision, also on meshes with borders whose border faces have one
 // border edge each (CGAL assumes that; a face with more is not border-refined here).
 // Limits: triangles only (refused, g unchanged); g's other properties and
-// descriptors do not survive a level.
+// descriptors do not survive a level: its topology is not Loop's 1-to-4 (a
+// face point per face, every old interior edge flipped, border edges split
+// in three every second level), so it goes through snapshot → refined soup
+// → rebuild rather than the in-place refinement.
 #pragma once
 
 #include <genmesh/subdivision/detail/refinement.h>
