@@ -93,20 +93,19 @@ void BM_Incidence_opposite_face(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * hs.size()));
 }
 
-// Every vertex's ring (halfedge(v), then opposite(next(h))): items = steps.
-template <class G>
-void BM_Incidence_around_vertex(benchmark::State& state) {
-  const G& g = base<G>(1);
+// Walks every element's cycle from start(x), h = step(h) until back at the
+// start, adding up visit(h): items = steps.
+void circulate(benchmark::State& state, const auto& elements, auto start_of, auto step, auto visit) {
   std::int64_t steps = 0;
   for (auto _ : state) {
     std::uint64_t acc = 0;
-    for (auto v : vertices(g)) {
-      const Halfedge_index start = halfedge(v, g);
+    for (auto x : elements) {
+      const Halfedge_index start = start_of(x);
       Halfedge_index h = start;
       do {
-        acc += source(h, g).idx();
+        acc += visit(h);
         ++steps;
-        h = opposite(next(h, g), g);
+        h = step(h);
       } while (h != start);
     }
     benchmark::DoNotOptimize(acc);
@@ -114,25 +113,22 @@ void BM_Incidence_around_vertex(benchmark::State& state) {
   state.SetItemsProcessed(steps);
 }
 
-// Every face's cycle (halfedge(f), then next): items = steps.
+// Every vertex's ring (halfedge(v), then opposite(next(h))).
+template <class G>
+void BM_Incidence_around_vertex(benchmark::State& state) {
+  const G& g = base<G>(1);
+  circulate(
+      state, vertices(g), [&](auto v) { return halfedge(v, g); },
+      [&](Halfedge_index h) { return opposite(next(h, g), g); }, [&](Halfedge_index h) { return source(h, g).idx(); });
+}
+
+// Every face's cycle (halfedge(f), then next).
 template <class G>
 void BM_Incidence_around_face(benchmark::State& state) {
   const G& g = base<G>(1);
-  std::int64_t steps = 0;
-  for (auto _ : state) {
-    std::uint64_t acc = 0;
-    for (auto f : faces(g)) {
-      const Halfedge_index start = halfedge(f, g);
-      Halfedge_index h = start;
-      do {
-        acc += target(h, g).idx();
-        ++steps;
-        h = next(h, g);
-      } while (h != start);
-    }
-    benchmark::DoNotOptimize(acc);
-  }
-  state.SetItemsProcessed(steps);
+  circulate(
+      state, faces(g), [&](auto f) { return halfedge(f, g); }, [&](Halfedge_index h) { return next(h, g); },
+      [&](Halfedge_index h) { return target(h, g).idx(); });
 }
 
 // ---- local operations ---------------------------------------------------------
@@ -155,49 +151,44 @@ G& mesh_for(std::int64_t mode) {
   return copy;
 }
 
+// Times pair(g, e) over the edges in order: two operations at edge e that
+// restore the mesh's size, true when both applied. Items = operations.
 template <class G>
-void BM_Incidence_flip_pair(benchmark::State& state) {
+void time_pairs(benchmark::State& state, auto pair) {
   G& g = mesh_for<G>(state.range(0));
   const auto order = edges_for(g, state.range(0));
   std::size_t i = 0, done = 0;
-  for (auto _ : state) {
-    const Halfedge_index h(2 * order[i++ % order.size()]);
-    if (genmesh::flip_edge(h, g)) {
-      genmesh::flip_edge(h, g);
-      ++done;
-    }
-  }
+  for (auto _ : state)
+    if (pair(g, order[i++ % order.size()])) ++done;
   state.SetItemsProcessed(static_cast<std::int64_t>(2 * done));
+}
+
+template <class G>
+void BM_Incidence_flip_pair(benchmark::State& state) {
+  time_pairs<G>(state, [](G& g, std::uint32_t e) {
+    const Halfedge_index h(2 * e);
+    if (!genmesh::flip_edge(h, g)) return false;
+    genmesh::flip_edge(h, g); // the edge goes back
+    return true;
+  });
 }
 
 template <class G>
 void BM_Incidence_split_collapse_pair(benchmark::State& state) {
-  G& g = mesh_for<G>(state.range(0));
-  const auto order = edges_for(g, state.range(0));
-  std::size_t i = 0, done = 0;
-  for (auto _ : state) {
-    const std::uint32_t e = order[i++ % order.size()];
-    if (e >= g.edges_size() || g.is_removed(Edge_index(e))) continue;
+  time_pairs<G>(state, [](G& g, std::uint32_t e) {
+    if (e >= g.edges_size() || g.is_removed(Edge_index(e))) return false;
     const auto hnew = genmesh::split_edge_and_triangulate(Halfedge_index(2 * e), g);
-    if (!hnew) continue;
     // hnew: u → w; collapsing w into u restores the mesh's size.
-    if (genmesh::collapse_edge(Edge_index(g.opposite(*hnew)), g)) ++done;
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(2 * done));
+    return hnew && genmesh::collapse_edge(Edge_index(g.opposite(*hnew)), g).has_value();
+  });
 }
 
 template <class G>
 void BM_Incidence_center_vertex_pair(benchmark::State& state) {
-  G& g = mesh_for<G>(state.range(0));
-  const auto order = edges_for(g, state.range(0));
-  std::size_t i = 0, done = 0;
-  for (auto _ : state) {
-    const Halfedge_index h(2 * order[i++ % order.size()]);
-    const auto hnew = genmesh::add_center_vertex(h, g);
-    if (!hnew) continue;
-    if (genmesh::remove_center_vertex(*hnew, g)) ++done;
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(2 * done));
+  time_pairs<G>(state, [](G& g, std::uint32_t e) {
+    const auto hnew = genmesh::add_center_vertex(Halfedge_index(2 * e), g);
+    return hnew && genmesh::remove_center_vertex(*hnew, g).has_value();
+  });
 }
 
 // ---- memory -----------------------------------------------------------------

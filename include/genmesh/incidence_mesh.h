@@ -10,7 +10,12 @@
 // (edge, side), h = 2e + side, side 0 running along the edge (source →
 // target as in d0); opposite(h) = h ^ 1 and edge(h) = h / 2 are arithmetic,
 // and next, prev, face, target, halfedge(v), halfedge(f) are derived from the
-// matrices on each call, in O(local degree).
+// matrices on each call, in O(local degree). Two derived helpers make the
+// derivation cheap and are kept up to date by every edit: per face an order
+// word (for each position of its d1 row, the position of the cyclic
+// successor, 4 bits each), so next() reads no d0 row; per vertex the number
+// of its edges with fewer than two faces, so halfedge(v) does not scan an
+// interior vertex's edges.
 //
 // Guarantees:
 // - It models HalfedgeGraph, HalfedgeListGraph, VertexListGraph,
@@ -48,11 +53,14 @@
 //   native operations refuse where the generic ones would make one, and where
 //   they would pinch a vertex into two border gaps: see
 //   detail/incidence_operations.h).
-// - Walking a face cycle is O(d²) for a face of degree d (each next() scans
-//   the face's row); vertex circulation is O(d) per step for faces of
-//   degree d. Measured (benchmarks/bench_incidence.cpp): next() ~34× and
-//   circulation 33–66× slower than Halfedge_mesh, local operations 6–14×; 126 bytes per triangle
-//   against 66.
+// - next() scans the face's d1 row for edge(h) (O(d) for a face of degree
+//   d) and looks the successor up in the order word; faces of more than 16
+//   sides, and faces edited by the low-level calls below since the last
+//   update_face_orders(), fall back to scanning d0 rows (O(d) per next).
+//   Measured (benchmarks/bench_incidence.cpp, table in docs/benchmarks.md):
+//   next() ~16× slower than Halfedge_mesh, circulation 25–60× (a chain of
+//   five dependent row reads per step), local operations 9–19×; 136 bytes
+//   per triangle against 66.
 // - Local operations need a manifold mesh; on a mesh loaded with
 //   non-manifold elements they refuse (predicates false, operations empty).
 // - No collect_garbage(): removed indices are recycled, never compacted.
@@ -535,18 +543,32 @@ public:
   /// (a merge of two short sorted rows), directed by its sign in f.
   [[nodiscard]] Halfedge_index next(Halfedge_index h) const {
     const Face_index f = face(h);
-    const Vertex_index t = target(h);
-    if (f.is_valid()) return side_at_(f, t, h);
-    return border_leaving_(t, h);
+    if (f.is_valid()) {
+      const std::uint64_t w = order_[f.idx()];
+      if (w != 0 && w != slow_order_) {
+        const int k = position_in_row_(f, h);
+        return side_at_position_(f, static_cast<int>((w >> (4 * k)) & 15u));
+      }
+      return side_at_(f, target(h), h);
+    }
+    return border_leaving_(target(h), h);
   }
 
   /// The halfedge before h in its face, or on the border the border halfedge
   /// entering source(h).
   [[nodiscard]] Halfedge_index prev(Halfedge_index h) const {
     const Face_index f = face(h);
-    const Vertex_index s0 = source(h);
-    if (f.is_valid()) return side_at_(f, s0, h);
-    return border_entering_(s0, h);
+    if (f.is_valid()) {
+      const std::uint64_t w = order_[f.idx()];
+      if (w != 0 && w != slow_order_) {
+        const auto k = static_cast<std::uint64_t>(position_in_row_(f, h));
+        int j = 0;
+        while (((w >> (4 * j)) & 15u) != k) ++j;
+        return side_at_position_(f, j);
+      }
+      return side_at_(f, source(h), h);
+    }
+    return border_entering_(source(h), h);
   }
 
   /// A halfedge targeting v: its incoming border halfedge if v is on the
@@ -558,6 +580,8 @@ public:
     if (n == 0) return {};
     const int* c = d0t_.cols(v.idx());
     const signed char* s = d0t_.vals(v.idx());
+    if (manifold_ && border_edges_[v.idx()] == 0) // interior: no edge to look at
+      return Halfedge_index(2u * static_cast<std::uint32_t>(c[0]) + (s[0] > 0 ? 0u : 1u));
     for (int k = 0; k < n; ++k) {
       if (d1t_.size(static_cast<std::uint32_t>(c[k])) == 2) continue; // faces on both sides
       const Halfedge_index in(2u * static_cast<std::uint32_t>(c[k]) + (s[k] > 0 ? 0u : 1u));
@@ -690,12 +714,14 @@ public:
       vremoved_[i] = false;
       points_[i] = p;
       d0t_.clear_row(i);
+      border_edges_[i] = 0;
       return Vertex_index(i);
     }
     const auto i = static_cast<std::uint32_t>(vremoved_.size());
     check_room_(i);
     vremoved_.push_back(false);
     points_.push_back(p);
+    border_edges_.push_back(0);
     d0t_.reserve_shape(i + 1, 1);
     d0_.reserve_shape(1, i + 1);
     if (!manifold_) bad_vertex_.push_back(false);
@@ -719,11 +745,14 @@ public:
       --removed_faces_;
       fremoved_[i] = false;
       d1_.clear_row(i);
+      touch_face_(i);
       return Face_index(i);
     }
     const auto i = static_cast<std::uint32_t>(fremoved_.size());
     check_room_(i);
     fremoved_.push_back(false);
+    order_.push_back(0);
+    dirty_.push_back(i);
     d1_.reserve_shape(i + 1, 1);
     d1t_.reserve_shape(1, i + 1);
     return Face_index(i);
@@ -731,7 +760,14 @@ public:
   /// Marks v removed and frees its index; its remaining incidences are dropped.
   void remove_vertex(Vertex_index v) {
     const std::uint32_t i = v.idx();
-    for (int k = 0; k < d0t_.size(i); ++k) d0_.erase(static_cast<std::uint32_t>(d0t_.cols(i)[k]), static_cast<int>(i));
+    touch_vertex_faces_(i);
+    for (int k = 0; k < d0t_.size(i); ++k) {
+      const auto e = static_cast<std::uint32_t>(d0t_.cols(i)[k]);
+      unhook_border_(e);
+      d0_.erase(e, static_cast<int>(i));
+      hook_border_(e);
+    }
+    border_edges_[i] = 0;
     d0t_.clear_row(i);
     vremoved_[i] = true;
     ++removed_vertices_;
@@ -742,6 +778,8 @@ public:
   /// and faces' rows lose it).
   void remove_edge(Edge_index e) {
     const std::uint32_t i = e.idx();
+    touch_edge_faces_(i);
+    unhook_border_(i);
     for (int k = 0; k < d0_.size(i); ++k) d0t_.erase(static_cast<std::uint32_t>(d0_.cols(i)[k]), static_cast<int>(i));
     for (int k = 0; k < d1t_.size(i); ++k) d1_.erase(static_cast<std::uint32_t>(d1t_.cols(i)[k]), static_cast<int>(i));
     d0_.clear_row(i);
@@ -754,8 +792,14 @@ public:
   /// Marks f removed and frees its index; its sides become border.
   void remove_face(Face_index f) {
     const std::uint32_t i = f.idx();
-    for (int k = 0; k < d1_.size(i); ++k) d1t_.erase(static_cast<std::uint32_t>(d1_.cols(i)[k]), static_cast<int>(i));
+    for (int k = 0; k < d1_.size(i); ++k) {
+      const auto e = static_cast<std::uint32_t>(d1_.cols(i)[k]);
+      unhook_border_(e);
+      d1t_.erase(e, static_cast<int>(i));
+      hook_border_(e);
+    }
     d1_.clear_row(i);
+    order_[i] = slow_order_; // not in the dirty list's sense: touch_face_() on reuse
     fremoved_[i] = true;
     ++removed_faces_;
     garbage_ = true;
@@ -767,6 +811,8 @@ public:
   /// Edge e now goes from u to v (halfedge(e, 0) targets v).
   void set_edge_vertices(Edge_index e, Vertex_index u, Vertex_index v) {
     const std::uint32_t i = e.idx();
+    touch_edge_faces_(i);
+    unhook_border_(i);
     for (int k = 0; k < d0_.size(i); ++k) d0t_.erase(static_cast<std::uint32_t>(d0_.cols(i)[k]), static_cast<int>(i));
     d0_.clear_row(i);
     d0_.ensure_room(i, 2);
@@ -774,6 +820,7 @@ public:
     d0_.set(i, static_cast<int>(v.idx()), 1);
     d0t_.set(u.idx(), static_cast<int>(i), -1);
     d0t_.set(v.idx(), static_cast<int>(i), 1);
+    hook_border_(i);
   }
   /// h now goes from u to v.
   void set_halfedge_vertices(Halfedge_index h, Vertex_index u, Vertex_index v) {
@@ -783,17 +830,22 @@ public:
   /// Every incidence of vertex `from` moves to `to` (edge directions kept).
   void move_incidences(Vertex_index from, Vertex_index to) {
     const std::uint32_t a = from.idx(), b = to.idx();
+    touch_vertex_faces_(a);
     for (int k = 0; k < d0t_.size(a); ++k) {
       const auto e = static_cast<std::uint32_t>(d0t_.cols(a)[k]);
       const signed char s = d0t_.vals(a)[k];
+      unhook_border_(e);
       d0_.erase(e, static_cast<int>(a));
       d0_.set(e, static_cast<int>(b), s);
       d0t_.set(b, static_cast<int>(e), s);
+      hook_border_(e);
     }
     d0t_.clear_row(a);
   }
   /// Exchanges the incidences of p and q (not their points).
   void swap_incidences(Vertex_index p, Vertex_index q) {
+    touch_vertex_faces_(p.idx());
+    touch_vertex_faces_(q.idx());
     std::vector<std::pair<int, signed char>> ep, eq;
     for (int k = 0; k < d0t_.size(p.idx()); ++k) ep.emplace_back(d0t_.cols(p.idx())[k], d0t_.vals(p.idx())[k]);
     for (int k = 0; k < d0t_.size(q.idx()); ++k) eq.emplace_back(d0t_.cols(q.idx())[k], d0t_.vals(q.idx())[k]);
@@ -805,20 +857,37 @@ public:
     d0t_.clear_row(q.idx());
     for (auto [e, s] : eq) d0t_.set(p.idx(), e, s);
     for (auto [e, s] : ep) d0t_.set(q.idx(), e, s);
+    std::swap(border_edges_[p.idx()], border_edges_[q.idx()]); // whole rows swapped
   }
   /// h becomes a side of f (f runs along h).
   void add_side(Face_index f, Halfedge_index h) {
     const signed char s = (h.idx() & 1u) ? -1 : 1;
     const int e = static_cast<int>(h.idx() >> 1);
+    touch_face_(f.idx());
     d1_.set(f.idx(), e, s);
     d1t_.ensure_room(static_cast<std::uint32_t>(e), 2);
+    unhook_border_(static_cast<std::uint32_t>(e));
     d1t_.set(static_cast<std::uint32_t>(e), static_cast<int>(f.idx()), s);
+    hook_border_(static_cast<std::uint32_t>(e));
   }
   /// h is no longer a side of f.
   void remove_side(Face_index f, Halfedge_index h) {
     const int e = static_cast<int>(h.idx() >> 1);
+    touch_face_(f.idx());
     d1_.erase(f.idx(), e);
+    unhook_border_(static_cast<std::uint32_t>(e));
     d1t_.erase(static_cast<std::uint32_t>(e), static_cast<int>(f.idx()));
+    hook_border_(static_cast<std::uint32_t>(e));
+  }
+
+  /// Recomputes the cyclic order of every face edited since the last call
+  /// (see next()). Every native operation calls it on return; after
+  /// low-level incidence edits, next() and prev() on the edited faces stay
+  /// correct but take the slow path until it is called. O(edited sides).
+  void update_face_orders() {
+    for (const std::uint32_t f : dirty_)
+      if (order_[f] == 0) order_[f] = face_order_(f);
+    dirty_.clear();
   }
 
   // ---- allocation policy ---------------------------------------------------
@@ -832,9 +901,11 @@ public:
   /// Capacity for nv vertices, ne edges and nf faces.
   void reserve(size_type nv, size_type ne, size_type nf) {
     points_.reserve(nv);
+    border_edges_.reserve(nv);
     vremoved_.reserve(nv);
     eremoved_.reserve(ne);
     fremoved_.reserve(nf);
+    order_.reserve(nf);
     d0_.reserve_shape(ne, nv);
     d0t_.reserve_shape(nv, ne);
     d1_.reserve_shape(nf, ne);
@@ -852,7 +923,8 @@ public:
     return points_.capacity() * sizeof(P) + d0_.memory_bytes() + d0t_.memory_bytes() + d1_.memory_bytes() +
            d1t_.memory_bytes() + bits(vremoved_) + bits(eremoved_) + bits(fremoved_) +
            (vfree_.capacity() + efree_.capacity() + ffree_.capacity()) * sizeof(std::uint32_t) +
-           bits(bad_vertex_) + bits(bad_edge_);
+           bits(bad_vertex_) + bits(bad_edge_) + order_.capacity() * sizeof(std::uint64_t) +
+           (dirty_.capacity() + border_edges_.capacity()) * sizeof(std::uint32_t);
   }
 
   // ---- ranges -------------------------------------------------------------
@@ -940,6 +1012,10 @@ public:
       m.d1_.assign(nf, ne, begin, cols, vals);
       transpose_into_(begin, cols, vals, nf, ne, m.d1t_);
     }
+    m.border_edges_.assign(np, 0);
+    for (std::uint32_t e = 0; e < ne; ++e) m.hook_border_(e);
+    m.order_.resize(nf);
+    for (std::size_t f = 0; f < nf; ++f) m.order_[f] = m.face_order_(static_cast<std::uint32_t>(f));
     *this = std::move(m);
   }
 
@@ -981,6 +1057,80 @@ private:
     d1t_.reserve_shape(i + 1, 1);
     if (!manifold_) bad_edge_.push_back(false);
     return Edge_index(i);
+  }
+
+  // ---- border counts: halfedge(v) without a scan on interior vertices ------
+  // border_edges_[v] counts v's edges with fewer than two faces. Every edit
+  // of an edge's d0 or d1ᵀ row unhooks the edge before and hooks it after.
+  void hook_border_(std::uint32_t e) {
+    if (d1t_.size(e) >= 2) return;
+    for (int k = 0; k < d0_.size(e); ++k) ++border_edges_[static_cast<std::size_t>(d0_.cols(e)[k])];
+  }
+  void unhook_border_(std::uint32_t e) {
+    if (d1t_.size(e) >= 2) return;
+    for (int k = 0; k < d0_.size(e); ++k) --border_edges_[static_cast<std::size_t>(d0_.cols(e)[k])];
+  }
+
+  // ---- face orders: next() in one lookup -------------------------------------
+  // order_[f] holds, for a face of 2..16 sides that is a closed directed
+  // cycle, the cyclic successor of each position of f's d1 row, 4 bits per
+  // position (it depends only on f's row and its edges' d0 rows, which is
+  // why the edits that change those mark f). 0: edited since the last
+  // update_face_orders() (f is in dirty_); slow_order_: too large, not a
+  // cycle, or removed — next() derives the successor from d0 as before.
+  static constexpr std::uint64_t slow_order_ = ~std::uint64_t(0);
+
+  void touch_face_(std::uint32_t f) {
+    if (order_[f] != 0) {
+      order_[f] = 0;
+      dirty_.push_back(f);
+    }
+  }
+  void touch_edge_faces_(std::uint32_t e) {
+    for (int k = 0; k < d1t_.size(e); ++k) touch_face_(static_cast<std::uint32_t>(d1t_.cols(e)[k]));
+  }
+  void touch_vertex_faces_(std::uint32_t v) {
+    for (int k = 0; k < d0t_.size(v); ++k) touch_edge_faces_(static_cast<std::uint32_t>(d0t_.cols(v)[k]));
+  }
+  // The position of edge(h) in f's d1 row (h is a side of f).
+  int position_in_row_(Face_index f, Halfedge_index h) const {
+    const int* c = d1_.cols(f.idx());
+    const int e = static_cast<int>(h.idx() >> 1);
+    int k = 0;
+    while (c[k] != e) ++k;
+    return k;
+  }
+  // The side at position k of f's d1 row, directed by its sign.
+  Halfedge_index side_at_position_(Face_index f, int k) const {
+    return Halfedge_index(2u * static_cast<std::uint32_t>(d1_.cols(f.idx())[k]) +
+                          static_cast<std::uint32_t>(d1_.vals(f.idx())[k] < 0));
+  }
+  // The successor word of f (see order_), or slow_order_.
+  std::uint64_t face_order_(std::uint32_t f) const {
+    const int n = d1_.size(f);
+    if (n < 2 || n > 16) return slow_order_;
+    const Face_index fi(f);
+    std::uint64_t w = 0;
+    for (int k = 0; k < n; ++k) {
+      const Halfedge_index hk = side_at_position_(fi, k);
+      const Vertex_index t = target(hk);
+      if (!t.is_valid() || d0_.size(hk.idx() >> 1) != 2) return slow_order_;
+      int j = 0; // the first other side through t, as side_at_() finds it
+      for (; j < n; ++j) {
+        if (j == k) continue;
+        const auto c = static_cast<std::uint32_t>(d1_.cols(f)[j]);
+        if (d0_.size(c) != 2) return slow_order_;
+        if (d0_.cols(c)[0] == static_cast<int>(t.idx()) || d0_.cols(c)[1] == static_cast<int>(t.idx())) break;
+      }
+      if (j == n || source(side_at_position_(fi, j)) != t) return slow_order_;
+      w |= std::uint64_t(j) << (4 * k);
+    }
+    int k = 0; // one cycle through all n positions
+    for (int step = 1; step <= n; ++step) {
+      k = static_cast<int>((w >> (4 * k)) & 15u);
+      if ((k == 0) != (step == n)) return slow_order_;
+    }
+    return w;
   }
 
   // The side of face f at vertex v other than h's: the edge of f's d1 row,
@@ -1105,6 +1255,9 @@ private:
   bool recycle_ = true;
   bool manifold_ = true;
   std::vector<bool> bad_edge_, bad_vertex_; // empty while manifold_
+  std::vector<std::uint64_t> order_;  // per face, see face_order_()
+  std::vector<std::uint32_t> dirty_;  // faces with order_ 0
+  std::vector<std::uint32_t> border_edges_; // per vertex, see hook_border_()
 };
 
 // ---------------------------------------------------------------------------

@@ -66,6 +66,17 @@ Hs cycle(Halfedge_index h, const M<P>& g) {
   return out;
 }
 
+// Brings the faces' cyclic orders (Incidence_mesh::update_face_orders) up to
+// date when an operation returns, whichever way it returns.
+template <class P>
+struct Face_order_update {
+  M<P>& g;
+  explicit Face_order_update(M<P>& mesh) : g(mesh) {}
+  Face_order_update(const Face_order_update&) = delete;
+  Face_order_update& operator=(const Face_order_update&) = delete;
+  ~Face_order_update() { g.update_face_orders(); }
+};
+
 template <class P>
 P midpoint(const P& a, const P& b) {
   if constexpr (Point3<P>) {
@@ -99,6 +110,19 @@ Halfedge_index split_face_raw(Halfedge_index h1, Halfedge_index h2, M<P>& g) {
   g.add_side(f, hnew);
   g.add_side(fnew, ohnew);
   return hnew;
+}
+
+// flip and unflip: h becomes u → v inside its two triangles; side `to_h`
+// moves from face(opposite(h)) to face(h), side `to_oh` the other way.
+template <class P>
+void turn_edge_raw(Halfedge_index h, Vertex_index u, Vertex_index v, Halfedge_index to_h, Halfedge_index to_oh,
+                   M<P>& g) {
+  const Face_index fh = g.face(h), foh = g.face(M<P>::opposite(h));
+  g.set_halfedge_vertices(h, u, v);
+  g.remove_side(foh, to_h);
+  g.add_side(fh, to_h);
+  g.remove_side(fh, to_oh);
+  g.add_side(foh, to_oh);
 }
 
 template <class P>
@@ -173,15 +197,10 @@ bool genmesh_native_can_flip_edge(Halfedge_index h, const Incidence_mesh<P>& g) 
 template <class P, class Visitor = Mutation_visitor>
 std::optional<Halfedge_index> genmesh_native_flip_edge(Halfedge_index h, Incidence_mesh<P>& g,
                                                        Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_flip_edge(h, std::as_const(g))) return std::nullopt;
-  const Halfedge_index oh = g.opposite(h), nh = g.next(h), nnh = g.next(nh), noh = g.next(oh), nnoh = g.next(noh);
-  const Vertex_index s2 = g.target(nh), t2 = g.target(noh);
-  const Face_index fh = g.face(h), foh = g.face(oh);
-  g.set_halfedge_vertices(h, s2, t2);
-  g.remove_side(foh, nnoh);
-  g.add_side(fh, nnoh);
-  g.remove_side(fh, nnh);
-  g.add_side(foh, nnh);
+  const Halfedge_index nh = g.next(h), noh = g.next(g.opposite(h));
+  detail::inc::turn_edge_raw(h, g.target(nh), g.target(noh), g.next(noh), g.next(nh), g);
   visitor.on_flip(h, std::as_const(g));
   return h;
 }
@@ -194,15 +213,10 @@ bool genmesh_native_can_unflip_edge(Halfedge_index h, const Incidence_mesh<P>& g
 template <class P, class Visitor = Mutation_visitor>
 std::optional<Halfedge_index> genmesh_native_unflip_edge(Halfedge_index h, Incidence_mesh<P>& g,
                                                          Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_unflip_edge(h, std::as_const(g))) return std::nullopt;
-  const Halfedge_index oh = g.opposite(h), nh = g.next(h), noh = g.next(oh);
-  const Vertex_index c = g.target(nh), d = g.target(noh);
-  const Face_index fh = g.face(h), foh = g.face(oh);
-  g.set_halfedge_vertices(h, d, c);
-  g.remove_side(foh, noh);
-  g.add_side(fh, noh);
-  g.remove_side(fh, nh);
-  g.add_side(foh, nh);
+  const Halfedge_index nh = g.next(h), noh = g.next(g.opposite(h));
+  detail::inc::turn_edge_raw(h, g.target(noh), g.target(nh), noh, nh, g);
   visitor.on_flip(h, std::as_const(g));
   return h;
 }
@@ -219,6 +233,7 @@ bool genmesh_native_can_split_edge(Halfedge_index h, const Incidence_mesh<P>& g)
 template <class P, class Visitor = Mutation_visitor>
 std::optional<Halfedge_index> genmesh_native_split_edge(Halfedge_index h, Incidence_mesh<P>& g,
                                                         Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_split_edge(h, std::as_const(g))) return std::nullopt;
   const Halfedge_index h2 = g.opposite(h);
   const Vertex_index u = g.target(h2), v = g.target(h);
@@ -246,6 +261,7 @@ bool genmesh_native_can_split_edge_and_triangulate(Halfedge_index h, const Incid
 template <class P, class Visitor = Mutation_visitor>
 std::optional<Halfedge_index> genmesh_native_split_edge_and_triangulate(Halfedge_index h, Incidence_mesh<P>& g,
                                                                         Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_split_edge_and_triangulate(h, std::as_const(g))) return std::nullopt;
   const Halfedge_index oh = g.opposite(h);
   const bool side_h = g.face(h).is_valid(), side_oh = g.face(oh).is_valid();
@@ -321,6 +337,7 @@ bool genmesh_native_can_collapse_edge(Edge_index e, const Incidence_mesh<P>& g) 
 
 template <class P, class Visitor = Mutation_visitor>
 std::optional<Vertex_index> genmesh_native_collapse_edge(Edge_index e, Incidence_mesh<P>& g, Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   namespace inc = detail::inc;
   if (!genmesh_native_can_collapse_edge(e, std::as_const(g))) return std::nullopt;
   const Halfedge_index pq = g.halfedge(e), qp = g.opposite(pq);
@@ -369,6 +386,7 @@ bool genmesh_native_can_split_face(Halfedge_index h1, Halfedge_index h2, const I
 template <class P, class Visitor = Mutation_visitor>
 std::optional<Halfedge_index> genmesh_native_split_face(Halfedge_index h1, Halfedge_index h2, Incidence_mesh<P>& g,
                                                         Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_split_face(h1, h2, std::as_const(g))) return std::nullopt;
   const Halfedge_index h3 = detail::inc::split_face_raw(h1, h2, g);
   visitor.on_split_face(h3, std::as_const(g));
@@ -403,6 +421,7 @@ bool genmesh_native_can_join_face(Halfedge_index h, const Incidence_mesh<P>& g) 
 
 template <class P, class Visitor = Mutation_visitor>
 std::optional<Halfedge_index> genmesh_native_join_face(Halfedge_index h, Incidence_mesh<P>& g, Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_join_face(h, std::as_const(g))) return std::nullopt;
   visitor.before_join_face(h, std::as_const(g));
   return detail::inc::join_face_raw(h, g);
@@ -420,6 +439,7 @@ bool genmesh_native_can_add_center_vertex(Halfedge_index h, const Incidence_mesh
 template <class P, class Visitor = Mutation_visitor>
 std::optional<Halfedge_index> genmesh_native_add_center_vertex(Halfedge_index h, Incidence_mesh<P>& g,
                                                                Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_add_center_vertex(h, std::as_const(g))) return std::nullopt;
   const Face_index f = g.face(h);
   const detail::inc::Hs c = detail::inc::cycle(h, g);
@@ -494,6 +514,7 @@ bool genmesh_native_can_remove_center_vertex(Halfedge_index h, const Incidence_m
 template <class P, class Visitor = Mutation_visitor>
 std::optional<Halfedge_index> genmesh_native_remove_center_vertex(Halfedge_index h, Incidence_mesh<P>& g,
                                                                   Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_remove_center_vertex(h, std::as_const(g))) return std::nullopt;
   visitor.before_remove_center_vertex(h, std::as_const(g));
   const Vertex_index v = g.target(h);
@@ -532,6 +553,7 @@ bool genmesh_native_can_add_face(const Range& vertices, const Incidence_mesh<P>&
 
 template <class P, class Range, class Visitor = Mutation_visitor>
 std::optional<Face_index> genmesh_native_add_face(const Range& vertices, Incidence_mesh<P>& g, Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!g.is_manifold()) return std::nullopt;
   detail::lo::Face_plan<Incidence_mesh<P>> plan;
   if (!detail::lo::plan_face(vertices, std::as_const(g), plan)) return std::nullopt;
@@ -566,6 +588,7 @@ bool genmesh_native_can_remove_face(Halfedge_index h, const Incidence_mesh<P>& g
 
 template <class P, class Visitor = Mutation_visitor>
 bool genmesh_native_remove_face(Halfedge_index h, Incidence_mesh<P>& g, Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_remove_face(h, std::as_const(g))) return false;
   visitor.before_remove_face(h, std::as_const(g));
   detail::inc::remove_face_raw(h, g);
@@ -588,6 +611,7 @@ bool genmesh_native_can_triangulate_face(Face_index f, const Incidence_mesh<P>& 
 
 template <class P, class Visitor = Mutation_visitor>
 bool genmesh_native_triangulate_face(Face_index f, Incidence_mesh<P>& g, Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_triangulate_face(f, std::as_const(g))) return false;
   const Halfedge_index h0 = g.halfedge(f);
   while (g.degree(g.face(h0)) > 3) {
@@ -599,6 +623,7 @@ bool genmesh_native_triangulate_face(Face_index f, Incidence_mesh<P>& g, Visitor
 
 template <class P, class Visitor = Mutation_visitor>
 std::size_t genmesh_native_triangulate_faces(Incidence_mesh<P>& g, Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   std::vector<Face_index> todo;
   for (const Face_index f : g.faces())
     if (g.degree(f) != 3) todo.push_back(f);
@@ -619,6 +644,7 @@ bool genmesh_native_can_bevel_face(Face_index f, const Incidence_mesh<P>& g) {
 
 template <class P, class Visitor = Mutation_visitor>
 std::optional<Face_index> genmesh_native_bevel_face(Face_index f, Incidence_mesh<P>& g, Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_bevel_face(f, std::as_const(g))) return std::nullopt;
   // The sides h_i = v_i → v_{i+1}, from next(halfedge(f)).
   const detail::inc::Hs side = detail::inc::cycle(g.next(g.halfedge(f)), g);
@@ -657,6 +683,7 @@ bool genmesh_native_can_bevel_vertex(Vertex_index v, const Incidence_mesh<P>& g)
 
 template <class P, class Visitor = Mutation_visitor>
 std::optional<Face_index> genmesh_native_bevel_vertex(Vertex_index v, Incidence_mesh<P>& g, Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_bevel_vertex(v, std::as_const(g))) return std::nullopt;
   detail::inc::Hs in;
   {
@@ -706,6 +733,7 @@ template <class P, class Visitor = Mutation_visitor>
 std::optional<Halfedge_index> genmesh_native_bevel_edge(Halfedge_index h, Incidence_mesh<P>& g,
                                                         const Bevel_edge_options& options = {},
                                                         Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!(options.fraction >= 0.0 && options.fraction < 1.0))
     throw invalid_input("bevel_edge: fraction " + std::to_string(options.fraction) + " is not in [0, 1)");
   if (!genmesh_native_can_bevel_edge(h, std::as_const(g))) return std::nullopt;
@@ -793,6 +821,7 @@ bool genmesh_native_can_erase_vertex(Vertex_index v, const Incidence_mesh<P>& g)
 
 template <class P, class Visitor = Mutation_visitor>
 std::optional<Face_index> genmesh_native_erase_vertex(Vertex_index v, Incidence_mesh<P>& g, Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_erase_vertex(v, std::as_const(g))) return std::nullopt;
   const auto h = genmesh_native_remove_center_vertex(g.halfedge(v), g, visitor);
   return g.face(*h);
@@ -805,6 +834,7 @@ bool genmesh_native_can_erase_edge(Edge_index e, const Incidence_mesh<P>& g) {
 
 template <class P, class Visitor = Mutation_visitor>
 std::optional<Face_index> genmesh_native_erase_edge(Edge_index e, Incidence_mesh<P>& g, Visitor&& visitor = {}) {
+  const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_erase_edge(e, std::as_const(g))) return std::nullopt;
   const auto r = genmesh_native_join_face(g.halfedge(e), g, visitor);
   return g.face(*r);
