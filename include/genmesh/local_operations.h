@@ -329,6 +329,24 @@ std::optional<halfedge_descriptor_t<G>> split_edge_and_triangulate(halfedge_desc
 // collapse_edge
 // ---------------------------------------------------------------------------
 
+/// The link condition's tests after the common-neighbour one (shared with
+/// backends that find common neighbours natively): no isolated triangle on
+/// either side; when e = edge(pq) is inner, not both ends on the border, not
+/// an edge of a tetrahedron or of a two-triangle pillow.
+template <class G>
+bool link_condition_beyond_neighbours(halfedge_descriptor_t<G> pq, const G& g) {
+  const auto qp = opposite(pq, g);
+  const bool top = !border(pq, g), bottom = !border(qp, g);
+  if (top && border(opposite(next(pq, g), g), g) && border(opposite(prev(pq, g), g), g)) return false;
+  if (bottom && border(opposite(next(qp, g), g), g) && border(opposite(prev(qp, g), g), g)) return false;
+  if (top && bottom) {
+    if (border_vertex(target(qp, g), g) && border_vertex(target(pq, g), g)) return false;
+    if (tetrahedron_at(pq, g)) return false;
+    if (next(pq, g) == opposite(prev(qp, g), g) && prev(pq, g) == opposite(next(qp, g), g)) return false;
+  }
+  return true;
+}
+
 /// The link condition of CGAL::Euler::does_satisfy_link_condition (Dey et
 /// al. 1999): every vertex adjacent to both ends of e forms a face with e; no
 /// isolated triangle; not both ends on the border when e is inner; not an
@@ -349,14 +367,7 @@ bool does_satisfy_link_condition(edge_descriptor_t<G> e, const G& g) {
       return false;
     x = opposite(next(x, g), g);
   } while (x != start);
-  if (top && lo::border(opposite(next(pq, g), g), g) && lo::border(opposite(prev(pq, g), g), g)) return false;
-  if (bottom && lo::border(opposite(next(qp, g), g), g) && lo::border(opposite(prev(qp, g), g), g)) return false;
-  if (top && bottom) {
-    if (lo::border_vertex(p, g) && lo::border_vertex(q, g)) return false;
-    if (lo::tetrahedron_at(pq, g)) return false;
-    if (next(pq, g) == opposite(prev(qp, g), g) && prev(pq, g) == opposite(next(qp, g), g)) return false;
-  }
-  return true;
+  return lo::link_condition_beyond_neighbours(pq, g);
 }
 
 /// Whether collapse_edge(e, g) would collapse: the faces of e are triangles

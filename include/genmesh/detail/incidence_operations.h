@@ -294,14 +294,7 @@ bool genmesh_native_does_satisfy_link_condition(Edge_index e, const Incidence_me
     const Vertex_index kv = a == p ? b : a;
     if (kv != q && !((kv == vl && top) || (kv == vr && bottom)) && g.halfedge(kv, q).is_valid()) return false;
   }
-  if (top && lo::border(opposite(next(pq, g), g), g) && lo::border(opposite(prev(pq, g), g), g)) return false;
-  if (bottom && lo::border(opposite(next(qp, g), g), g) && lo::border(opposite(prev(qp, g), g), g)) return false;
-  if (top && bottom) {
-    if (lo::border_vertex(p, g) && lo::border_vertex(q, g)) return false;
-    if (lo::tetrahedron_at(pq, g)) return false;
-    if (next(pq, g) == opposite(prev(qp, g), g) && prev(pq, g) == opposite(next(qp, g), g)) return false;
-  }
-  return true;
+  return lo::link_condition_beyond_neighbours(pq, g);
 }
 
 template <class P>
