@@ -788,8 +788,9 @@ namespace {
 // Attribute transport: a per-vertex scalar equal to a linear function of the
 // position, blended with the masks the visitor reports, equals that function
 // of the new positions after every level — on the border, on creases, at
-// tagged corners too (every rule is an affine combination) — and is the same
-// on every backend.
+// tagged corners too (every rule is an affine combination), for √3 on its
+// refined border and for Doo-Sabin's corner points — and is the same on every
+// backend.
 
 double linear(const Eigen::Vector3d& p) { return 2.0 * p.x() - 3.0 * p.y() + 0.5 * p.z() + 1.0; }
 
@@ -821,7 +822,8 @@ TYPED_TEST(Subdivision, VisitorMasksCarryAttributesLikePositions) {
                                                                    {"torus", genmesh::make_torus(8, 6, true)},
                                                                    {"quad torus", genmesh::make_torus(8, 6, false)}};
   for (const auto& [label, soup] : cases)
-    for (Scheme scheme : {Scheme::loop, Scheme::catmull_clark, Scheme::butterfly, Scheme::midpoint})
+    for (Scheme scheme : {Scheme::loop, Scheme::catmull_clark, Scheme::butterfly, Scheme::midpoint, Scheme::sqrt3,
+                          Scheme::doo_sabin})
       for (bool creases : {false, true}) {
         const bool smoothing = scheme == Scheme::loop || scheme == Scheme::catmull_clark;
         if ((creases && !smoothing) || (takes_triangles_only(scheme) && !all_triangles(soup))) continue;
@@ -842,6 +844,9 @@ TYPED_TEST(Subdivision, VisitorMasksCarryAttributesLikePositions) {
                 g, {.iterations = 2, .crease_sharpness = sharp, .corners = corners, .visitor = t.visitor()});
             break;
           case Scheme::butterfly: genmesh::butterfly_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
+          // two levels: the second refines √3's border (the (16, 10, 1) and (4, 19, 4) masks)
+          case Scheme::sqrt3: genmesh::sqrt3_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
+          case Scheme::doo_sabin: genmesh::doo_sabin_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
           default: genmesh::midpoint_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
           }
           return t;

@@ -13,6 +13,8 @@
 // Numbering: the corner points in face order, corner by corner from each
 // face's lowest vertex; faces: F-faces (face order), E-faces (edge order),
 // V-faces (vertex order).
+// Attributes: .visitor.on_vertex receives every new vertex's mask (the
+// corner point's α_k over its face's corners).
 // Guarantees: identical on every backend; on closed meshes V' = Σ deg f,
 // F' = F + E + V, the Euler characteristic is kept and every new vertex has
 // valence 4; the border loop count is kept. Equal to CGAL's
@@ -22,6 +24,7 @@
 // place (as Loop's is) but goes through snapshot → refined soup → rebuild.
 #pragma once
 
+#include <genmesh/subdivision/detail/in_place.h>
 #include <genmesh/subdivision/detail/refinement.h>
 
 #include <cmath>
@@ -32,15 +35,21 @@ namespace genmesh {
 /// Options of doo_sabin_subdivision().
 struct Doo_sabin_options {
   int iterations = 1; ///< levels to apply (≥ 0)
+  /// Attribute transport (masks of every new vertex) and level hooks.
+  Subdivision_visitor visitor = {};
 };
 
 namespace detail::subdivision {
 
-inline Polygon_soup doo_sabin_level(const Snapshot& s) {
+/// One level; the visitor gets on_level_begin(level, ...) and every new
+/// vertex's mask in the soup's point order (the rebuilt mesh's vertex order).
+inline Polygon_soup doo_sabin_level(const Snapshot& s, const Subdivision_visitor& vis = {}, int level = 0) {
   const std::size_t nc = s.corner_vertex.size();
+  if (vis.on_level_begin) vis.on_level_begin(level, s.num_vertices(), nc);
   Polygon_soup out;
   out.points.resize(nc);
   std::vector<double> w;
+  std::vector<std::uint32_t> src;
   for (std::uint32_t f = 0; f < s.num_faces(); ++f) {
     const std::uint32_t n = s.face_size(f), b = s.face_begin[f];
     w.resize(n);
@@ -50,6 +59,11 @@ inline Polygon_soup doo_sabin_level(const Snapshot& s) {
       Eigen::Vector3d p = Eigen::Vector3d::Zero();
       for (std::uint32_t k = 0; k < n; ++k) p += w[k] * s.points[s.corner_vertex[b + (i + k) % n]];
       out.points[b + i] = p;
+      if (vis.on_vertex) {
+        src.resize(n);
+        for (std::uint32_t k = 0; k < n; ++k) src[k] = s.corner_vertex[b + (i + k) % n];
+        vis.on_vertex(b + i, src, w);
+      }
     }
   }
   out.indices.reserve(4 * nc);
@@ -85,10 +99,18 @@ template <class G>
   requires detail::subdivision::Subdividable<G>
 Subdivision_result doo_sabin_subdivision(G& g, const Doo_sabin_options& options = {}) {
   namespace ds = detail::subdivision;
+  const Subdivision_visitor& vis = options.visitor;
   std::vector<double> none;
-  return ds::run_levels(
+  Subdivision_result r = ds::run_levels(
       g, options.iterations, "doo_sabin_subdivision", 0, none,
-      [](const ds::Snapshot& s, int) { return ds::Refined{ds::doo_sabin_level(s), {}}; }, ds::no_half);
+      [&](const ds::Snapshot& s, int i) {
+        // the hooks of a level chained without a rebuild (see run_levels) run on its soup
+        if (i > 0 && vis.on_level_end) vis.on_level_end(i - 1);
+        return ds::Refined{ds::doo_sabin_level(s, vis, i), {}};
+      },
+      ds::no_half);
+  if (options.iterations > 0 && vis.on_level_end) vis.on_level_end(options.iterations - 1);
+  return r;
 }
 
 } // namespace genmesh

@@ -14,6 +14,10 @@
 // Numbering: old vertices, then per face in face order its face point (or,
 // refined border faces, its two border points); faces: two per interior edge
 // (edge iteration order), one per border edge.
+// Attributes: .visitor.on_vertex receives every new vertex's mask in the
+// numbering above (a face point its corners, 1/3 each; an interior old vertex
+// itself with 1 − α and its neighbours with α/n; a border vertex itself, or
+// (4, 19, 4)/27 when it moves; a border point its (16, 10, 1)/27 mask).
 // Guarantees: identical on every backend; V' = V + F, F' = 3F on closed
 // meshes; Euler characteristic and border loops kept; equal to CGAL's
 // Sqrt3_subdivision, also on meshes with borders whose border faces have one
@@ -25,8 +29,10 @@
 // → rebuild rather than the in-place refinement.
 #pragma once
 
+#include <genmesh/subdivision/detail/in_place.h>
 #include <genmesh/subdivision/detail/refinement.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -39,6 +45,8 @@ struct Sqrt3_options {
   /// 1, 3, ... counted from 0, as CGAL's Sqrt3_subdivision); fixed: the border
   /// polygon is never refined and border vertices never move.
   Boundary_rule boundary = Boundary_rule::smooth;
+  /// Attribute transport (masks of every new vertex) and level hooks.
+  Subdivision_visitor visitor = {};
 };
 
 namespace detail::subdivision {
@@ -50,7 +58,10 @@ namespace detail::subdivision {
 // (p: the border vertex after src, q: the one before tgt along the border),
 // the middle triangle is (n1, n2, x), and n1 / n2 stand in for the face point
 // of the edges x → src / tgt → x; tgt moves to (4 (its border neighbours) + 19 tgt) / 27.
-inline Polygon_soup sqrt3_level(const Snapshot& s, bool refine_border) {
+// The visitor gets on_level_begin(level, ...) and every new vertex's mask in
+// the soup's point order (the rebuilt mesh's vertex order).
+inline Polygon_soup sqrt3_level(const Snapshot& s, bool refine_border, const Subdivision_visitor& vis = {},
+                                int level = 0) {
   const std::uint32_t nv = static_cast<std::uint32_t>(s.num_vertices());
   const std::uint32_t ne = static_cast<std::uint32_t>(s.num_edges());
   const std::uint32_t nf = static_cast<std::uint32_t>(s.num_faces());
@@ -74,6 +85,9 @@ inline Polygon_soup sqrt3_level(const Snapshot& s, bool refine_border) {
   }
   // per face: its new point (face point, or n1 with n2 = n1 + 1) and its border corner
   std::vector<std::uint32_t> first_point(nf), border_corner(nf, k_none);
+  // for the visitor: per refined border face its p and q; per moved border vertex tgt its (src, q)
+  const bool masks = bool(vis.on_vertex);
+  std::vector<std::array<std::uint32_t, 2>> face_pq(masks ? nf : 0), moved(masks ? nv : 0, {k_none, k_none});
   for (std::uint32_t f = 0; f < nf; ++f) {
     std::uint32_t borders = 0, bc = k_none;
     for (std::uint32_t c = s.face_begin[f]; c < s.face_begin[f + 1]; ++c)
@@ -92,10 +106,48 @@ inline Polygon_soup sqrt3_level(const Snapshot& s, bool refine_border) {
       out.points.push_back((16.0 * s.points[src] + 10.0 * s.points[tgt] + s.points[p]) / 27.0);
       out.points.push_back((10.0 * s.points[src] + 16.0 * s.points[tgt] + s.points[q]) / 27.0);
       out.points[tgt] = (4.0 * (s.points[src] + s.points[q]) + 19.0 * s.points[tgt]) / 27.0;
+      if (masks) face_pq[f] = {p, q}, moved[tgt] = {src, q};
     } else {
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
       for (std::uint32_t c = s.face_begin[f]; c < s.face_begin[f + 1]; ++c) sum += s.points[s.corner_vertex[c]];
       out.points.push_back(sum / double(s.face_size(f)));
+    }
+  }
+  if (vis.on_level_begin) vis.on_level_begin(level, nv, out.points.size());
+  if (masks) {
+    std::vector<std::uint32_t> src;
+    std::vector<double> w;
+    std::vector<std::vector<std::uint32_t>> neighbours(nv);
+    for (std::uint32_t e = 0; e < ne; ++e) {
+      const std::uint32_t c = s.edge_corner[e], a = s.corner_vertex[c], b = s.head(c);
+      neighbours[a].push_back(b);
+      neighbours[b].push_back(a);
+    }
+    for (std::uint32_t v = 0; v < nv; ++v) {
+      if (moved[v][0] != k_none) {
+        src.assign({moved[v][0], moved[v][1], v}), w.assign({4.0 / 27.0, 4.0 / 27.0, 19.0 / 27.0});
+      } else if (s.is_border_vertex(v)) {
+        src.assign({v}), w.assign({1.0});
+      } else {
+        const double n = s.valence[v];
+        const double alpha = (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / n)) / 9.0;
+        src.assign({v}), w.assign({1.0 - alpha});
+        for (std::uint32_t u : neighbours[v]) src.push_back(u), w.push_back(alpha / n);
+      }
+      vis.on_vertex(v, src, w);
+    }
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      const std::uint32_t bc = border_corner[f];
+      if (bc == k_none) {
+        src.assign(s.corner_vertex.begin() + s.face_begin[f], s.corner_vertex.begin() + s.face_begin[f + 1]);
+        w.assign(src.size(), 1.0 / double(src.size()));
+        vis.on_vertex(first_point[f], src, w);
+      } else {
+        const std::uint32_t a = s.corner_vertex[bc], b = s.head(bc);
+        w.assign({16.0 / 27.0, 10.0 / 27.0, 1.0 / 27.0});
+        src.assign({a, b, face_pq[f][0]}), vis.on_vertex(first_point[f], src, w);
+        src.assign({b, a, face_pq[f][1]}), vis.on_vertex(first_point[f] + 1, src, w);
+      }
     }
   }
   // the point standing for corner c's face on c's edge
@@ -131,13 +183,18 @@ template <class G>
   requires detail::subdivision::Subdividable<G>
 Subdivision_result sqrt3_subdivision(G& g, const Sqrt3_options& options = {}) {
   namespace ds = detail::subdivision;
+  const Subdivision_visitor& vis = options.visitor;
   std::vector<double> none;
-  return ds::run_levels(
+  Subdivision_result r = ds::run_levels(
       g, options.iterations, "sqrt3_subdivision", 3, none,
       [&](const ds::Snapshot& s, int i) {
-        return ds::Refined{ds::sqrt3_level(s, options.boundary == Boundary_rule::smooth && i % 2 == 1), {}};
+        // the hooks of a level chained without a rebuild (see run_levels) run on its soup
+        if (i > 0 && vis.on_level_end) vis.on_level_end(i - 1);
+        return ds::Refined{ds::sqrt3_level(s, options.boundary == Boundary_rule::smooth && i % 2 == 1, vis, i), {}};
       },
       ds::no_half);
+  if (options.iterations > 0 && vis.on_level_end) vis.on_level_end(options.iterations - 1);
+  return r;
 }
 
 } // namespace genmesh

@@ -55,9 +55,10 @@
 
 namespace genmesh {
 
-/// Attribute transport and observation for loop_subdivision(),
-/// catmull_clark_subdivision(), butterfly_subdivision() and
-/// midpoint_subdivision(). Every member may be left empty.
+/// Attribute transport and observation for every scheme:
+/// loop_subdivision(), catmull_clark_subdivision(), butterfly_subdivision(),
+/// midpoint_subdivision(), sqrt3_subdivision() and doo_sabin_subdivision().
+/// Every member may be left empty.
 struct Subdivision_visitor {
   /// Before level `level` (0-based within the call) with the vertex counts
   /// before and after it.
