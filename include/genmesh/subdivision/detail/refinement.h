@@ -76,6 +76,21 @@ struct Snapshot {
     std::uint32_t f = corner_face[c];
     return c == face_begin[f] ? face_begin[f + 1] - 1 : c - 1;
   }
+  /// Numbers the next edge: corner c and its twin o (k_none on the border);
+  /// counts it in the valences and border-edge counts of its ends.
+  void add_edge(std::uint32_t c, std::uint32_t o) {
+    const auto en = static_cast<std::uint32_t>(edge_corner.size());
+    edge_corner.push_back(c);
+    corner_edge[c] = en;
+    if (o != k_none) corner_edge[o] = en;
+    const std::uint32_t a = corner_vertex[c], b = head(c);
+    ++valence[a];
+    ++valence[b];
+    if (o == k_none) {
+      ++border_edges[a];
+      ++border_edges[b];
+    }
+  }
   /// Target vertex of corner c's halfedge.
   std::uint32_t head(std::uint32_t c) const { return corner_vertex[next(c)]; }
   bool is_border_edge(std::uint32_t e) const { return corner_twin[edge_corner[e]] == k_none; }
@@ -180,17 +195,7 @@ Snapshot snapshot(G& g, const char* scheme, std::uint32_t required_face_size = 0
     std::uint32_t o = hcorner[static_cast<std::size_t>(get(hindex, opposite(h, g)))];
     if (c == k_none) std::swap(c, o);
     if (c == k_none) throw invalid_input(std::string(scheme) + ": an edge has no face on either side");
-    auto en = static_cast<std::uint32_t>(s.edge_corner.size());
-    s.edge_corner.push_back(c);
-    s.corner_edge[c] = en;
-    if (o != k_none) s.corner_edge[o] = en;
-    std::uint32_t a = s.corner_vertex[c], b = s.head(c);
-    ++s.valence[a];
-    ++s.valence[b];
-    if (o == k_none) {
-      ++s.border_edges[a];
-      ++s.border_edges[b];
-    }
+    s.add_edge(c, o);
   }
   set_vertex_corners(s);
   return s;
@@ -295,19 +300,7 @@ inline Snapshot snapshot_of_soup(Polygon_soup&& soup, const std::vector<std::uin
   s.vertex_corner.assign(nv, k_none);
   for (std::size_t c = 0; c < nc; ++c) {
     const std::uint32_t rc = remap[c];
-    if (s.corner_edge[rc] != k_none) continue;
-    const auto en = static_cast<std::uint32_t>(s.edge_corner.size());
-    s.edge_corner.push_back(rc);
-    s.corner_edge[rc] = en;
-    const std::uint32_t o = s.corner_twin[rc];
-    if (o != k_none) s.corner_edge[o] = en;
-    const std::uint32_t a = s.corner_vertex[rc], b = s.head(rc);
-    ++s.valence[a];
-    ++s.valence[b];
-    if (o == k_none) {
-      ++s.border_edges[a];
-      ++s.border_edges[b];
-    }
+    if (s.corner_edge[rc] == k_none) s.add_edge(rc, s.corner_twin[rc]);
   }
   set_vertex_corners(s);
   if (soup_corner) *soup_corner = std::move(remap);
