@@ -201,15 +201,21 @@ Snapshot snapshot(G& g, const char* scheme, std::uint32_t required_face_size = 0
   return s;
 }
 
-/// Pairs the corners of a refined soup through per-vertex buckets (linear time).
-inline std::vector<std::uint32_t> pair_corners(const Polygon_soup& s) {
-  const std::size_t np = s.num_points(), nf = s.num_faces(), nc = s.indices.size();
-  std::vector<std::uint32_t> head(nc);
-  for (std::size_t f = 0; f < nf; ++f) {
+/// The vertex each corner's halfedge goes to (the next corner's vertex).
+inline std::vector<std::uint32_t> corner_heads(const Polygon_soup& s) {
+  std::vector<std::uint32_t> head(s.indices.size());
+  for (std::size_t f = 0; f < s.num_faces(); ++f) {
     const std::uint32_t b = s.offsets[f], e = s.offsets[f + 1];
     for (std::uint32_t c = b; c + 1 < e; ++c) head[c] = s.indices[c + 1];
     head[e - 1] = s.indices[b];
   }
+  return head;
+}
+
+/// Pairs the corners of a refined soup through per-vertex buckets (linear time).
+inline std::vector<std::uint32_t> pair_corners(const Polygon_soup& s) {
+  const std::size_t np = s.num_points(), nc = s.indices.size();
+  const std::vector<std::uint32_t> head = corner_heads(s);
   std::vector<std::uint32_t> begin(np + 1, 0), bucket(nc);
   for (std::size_t c = 0; c < nc; ++c) ++begin[s.indices[c] + 1];
   for (std::size_t v = 0; v < np; ++v) begin[v + 1] += begin[v];
@@ -244,13 +250,8 @@ inline std::vector<std::uint32_t> pair_corners(const Polygon_soup& s) {
 template <class G>
 void build_refined(const Polygon_soup& s, G& g, std::vector<std::uint32_t> known_twin = {},
                    std::vector<std::uint32_t>* corner_edge = nullptr) {
-  const std::size_t np = s.num_points(), nf = s.num_faces(), nc = s.indices.size();
-  std::vector<std::uint32_t> head(nc);
-  for (std::size_t f = 0; f < nf; ++f) {
-    const std::uint32_t b = s.offsets[f], e = s.offsets[f + 1];
-    for (std::uint32_t c = b; c + 1 < e; ++c) head[c] = s.indices[c + 1];
-    head[e - 1] = s.indices[b];
-  }
+  const std::size_t np = s.num_points(), nc = s.indices.size();
+  const std::vector<std::uint32_t> head = corner_heads(s);
   std::vector<std::uint32_t> twin = std::move(known_twin), border_out(np, k_none);
   std::size_t ne = 0;
   if (twin.empty()) twin = pair_corners(s);
