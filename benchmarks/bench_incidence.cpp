@@ -67,11 +67,13 @@ std::vector<std::uint32_t> shuffled_edges(std::size_t n) {
   return v;
 }
 
-// ---- traversal (the large mesh) --------------------------------------------
+// ---- traversal --------------------------------------------------------------
+// range(0): 0 = the small mesh (its incidence rows fit in L2), 1 = the large
+// mesh (they do not: every derived step can miss).
 
 template <class G>
 void BM_Incidence_next(benchmark::State& state) {
-  const G& g = base<G>(1);
+  const G& g = base<G>(static_cast<int>(state.range(0)));
   std::vector<Halfedge_index> hs(halfedges(g).begin(), halfedges(g).end());
   for (auto _ : state) {
     std::uint64_t acc = 0;
@@ -83,7 +85,7 @@ void BM_Incidence_next(benchmark::State& state) {
 
 template <class G>
 void BM_Incidence_opposite_face(benchmark::State& state) {
-  const G& g = base<G>(1);
+  const G& g = base<G>(static_cast<int>(state.range(0)));
   std::vector<Halfedge_index> hs(halfedges(g).begin(), halfedges(g).end());
   for (auto _ : state) {
     std::uint64_t acc = 0;
@@ -116,7 +118,7 @@ void circulate(benchmark::State& state, const auto& elements, auto start_of, aut
 // Every vertex's ring (halfedge(v), then opposite(next(h))).
 template <class G>
 void BM_Incidence_around_vertex(benchmark::State& state) {
-  const G& g = base<G>(1);
+  const G& g = base<G>(static_cast<int>(state.range(0)));
   circulate(
       state, vertices(g), [&](auto v) { return halfedge(v, g); },
       [&](Halfedge_index h) { return opposite(next(h, g), g); }, [&](Halfedge_index h) { return source(h, g).idx(); });
@@ -125,7 +127,7 @@ void BM_Incidence_around_vertex(benchmark::State& state) {
 // Every face's cycle (halfedge(f), then next).
 template <class G>
 void BM_Incidence_around_face(benchmark::State& state) {
-  const G& g = base<G>(1);
+  const G& g = base<G>(static_cast<int>(state.range(0)));
   circulate(
       state, faces(g), [&](auto f) { return halfedge(f, g); }, [&](Halfedge_index h) { return next(h, g); },
       [&](Halfedge_index h) { return target(h, g).idx(); });
@@ -216,8 +218,8 @@ void BM_Incidence_bytes_per_triangle(benchmark::State& state) {
 }
 
 #define GENMESH_INCIDENCE_BENCH(fn, name)                                                \
-  BENCHMARK_TEMPLATE(fn, Inc)->Name("Incidence/" name "/Incidence_mesh");                \
-  BENCHMARK_TEMPLATE(fn, Hm)->Name("Incidence/" name "/Halfedge_mesh");
+  BENCHMARK_TEMPLATE(fn, Inc)->Name("Incidence/" name "/Incidence_mesh")->Arg(0)->Arg(1); \
+  BENCHMARK_TEMPLATE(fn, Hm)->Name("Incidence/" name "/Halfedge_mesh")->Arg(0)->Arg(1);
 GENMESH_INCIDENCE_BENCH(BM_Incidence_next, "traversal_next")
 GENMESH_INCIDENCE_BENCH(BM_Incidence_opposite_face, "traversal_opposite_face")
 GENMESH_INCIDENCE_BENCH(BM_Incidence_around_vertex, "traversal_around_vertex")

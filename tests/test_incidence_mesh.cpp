@@ -406,6 +406,13 @@ TEST(IncidenceMesh, AllocationIsHalfedgeMeshs) {
 
 // ---- the row store ------------------------------------------------------------
 
+// Sets (v ≠ 0) or erases (v = 0) entry (r, c) of the store and of its dense twin.
+void edit_both(genmesh::detail::Incidence_rows& rows, Eigen::MatrixXi& dense, std::uint32_t r, int c, signed char v) {
+  if (v == 0) rows.erase(r, c);
+  else rows.set(r, c, v);
+  dense(static_cast<int>(r), c) = v;
+}
+
 // Rows that outgrow their slots move to the end of the buffer and abandoned
 // slots are compacted; through all of it the Eigen matrix reads back exactly
 // the entries set (checked against a dense copy), in column order.
@@ -418,14 +425,8 @@ TEST(IncidenceRows, RelocationAndCompactionKeepTheMatrix) {
   for (int step = 0; step < 20000; ++step) {
     const auto r = static_cast<std::uint32_t>(rng() % n);
     const int c = static_cast<int>(rng() % n);
-    if (rng() % 3 == 0) {
-      rows.erase(r, c);
-      dense(static_cast<int>(r), c) = 0;
-    } else {
-      const signed char v = (rng() & 1u) ? 1 : -1;
-      rows.set(r, c, v);
-      dense(static_cast<int>(r), c) = v;
-    }
+    if (rng() % 3 == 0) edit_both(rows, dense, r, c, 0);
+    else edit_both(rows, dense, r, c, (rng() & 1u) ? 1 : -1);
     if (step % 1000 == 0) rows.clear_row(static_cast<std::uint32_t>(step / 1000)), dense.row(step / 1000).setZero();
   }
   EXPECT_GT(rows.compactions(), 0u);
@@ -443,20 +444,27 @@ TEST(IncidenceRows, RelocationAndCompactionKeepTheMatrix) {
   EXPECT_EQ(rows.at(3, 7), dense(3, 7));
 }
 
+// `steps` seeded random flips, splits, collapses (and centre vertices when
+// `centres`) at random edges.
+void random_local_operations(Inc& m, unsigned seed, int steps, bool centres) {
+  std::mt19937 rng(seed);
+  for (int step = 0; step < steps; ++step) {
+    const Edge_index e(static_cast<std::uint32_t>(rng() % m.edges_size()));
+    if (m.is_removed(e)) continue;
+    switch (rng() % (centres ? 4 : 3)) {
+    case 0: genmesh::flip_edge(halfedge(e, m), m); break;
+    case 1: genmesh::split_edge_and_triangulate(halfedge(e, m), m); break;
+    case 3: genmesh::add_center_vertex(halfedge(e, m), m); break;
+    default: genmesh::collapse_edge(e, m); break;
+    }
+  }
+}
+
 // After thousands of operations the matrices still satisfy the algebra.
 TEST(IncidenceRows, AlgebraHoldsAfterOperations) {
   Inc m;
   genmesh::build_mesh(genmesh::make_icosphere(2), m);
-  std::mt19937 rng(9);
-  for (int step = 0; step < 3000; ++step) {
-    const Edge_index e(static_cast<std::uint32_t>(rng() % m.edges_size()));
-    if (m.is_removed(e)) continue;
-    switch (rng() % 3) {
-    case 0: genmesh::flip_edge(halfedge(e, m), m); break;
-    case 1: genmesh::split_edge_and_triangulate(halfedge(e, m), m); break;
-    default: genmesh::collapse_edge(e, m); break;
-    }
-  }
+  random_local_operations(m, 9, 3000, false);
   const Algebra_facts r = algebra_facts(m);
   EXPECT_TRUE(r.boundary_of_boundary_vanishes);
   EXPECT_TRUE(r.laplacian);
@@ -465,6 +473,142 @@ TEST(IncidenceRows, AlgebraHoldsAfterOperations) {
   // Removed elements leave empty rows and columns.
   EXPECT_EQ(m.d0().nonZeros(), 2 * static_cast<long>(num_edges(m)));
   EXPECT_EQ(m.d1().nonZeros(), 3 * static_cast<long>(num_faces(m)));
+}
+
+// A store with home slots keeps row r at 2r, zero past its end, and reads
+// as the same matrix; the first row of three entries turns it general, and
+// the matrix still reads back exactly.
+TEST(IncidenceRows, HomeSlotsReadAsTheMatrix) {
+  EXPECT_THROW(genmesh::detail::Incidence_rows(3), genmesh::invalid_input);
+  genmesh::detail::Incidence_rows rows(2);
+  const int n = 150;
+  rows.reserve_shape(10, n); // grows by doubling below
+  Eigen::MatrixXi dense = Eigen::MatrixXi::Zero(n, n);
+  std::mt19937 rng(17);
+  auto expect_home_layout = [&](int bound) {
+    ASSERT_TRUE(rows.homed());
+    bound = std::min(bound, static_cast<int>(rows.matrix().rows())); // rows reserved so far
+    for (std::uint32_t r = 0; r < static_cast<std::uint32_t>(bound); ++r) {
+      const int k = rows.size(r);
+      ASSERT_LE(k, 2);
+      for (int j = 0; j < k; ++j) {
+        ASSERT_EQ(rows.home_cols(r)[j], rows.cols(r)[j]) << r;
+        ASSERT_EQ(rows.home_vals(r)[j], rows.vals(r)[j]) << r;
+      }
+      for (int j = k; j < 2; ++j) ASSERT_EQ(rows.home_vals(r)[j], 0) << "row " << r << " past its end";
+    }
+  };
+  for (int step = 0; step < 20000; ++step) {
+    const auto r = static_cast<std::uint32_t>(rng() % n);
+    rows.reserve_shape(r + 1, n);
+    const int c = static_cast<int>(rng() % n);
+    if (rows.size(r) == 2 || rng() % 3 == 0)
+      edit_both(rows, dense, r, rows.size(r) == 2 && rng() % 2 ? rows.cols(r)[rng() % 2] : c, 0);
+    else edit_both(rows, dense, r, c, (rng() & 1u) ? 1 : -1);
+    if (step % 997 == 0) rows.clear_row(r), dense.row(static_cast<int>(r)).setZero();
+    if (step % 2000 == 0) expect_home_layout(n);
+  }
+  expect_home_layout(n);
+  EXPECT_EQ(Eigen::MatrixXi(rows.compressed(n, n)), dense);
+  // A copy is homed again (Eigen's copy compresses it).
+  const genmesh::detail::Incidence_rows copy = rows;
+  EXPECT_TRUE(copy.homed());
+  EXPECT_EQ(Eigen::MatrixXi(copy.compressed(n, n)), dense);
+  // A third entry: the general layout from then on, same matrix.
+  std::uint32_t full = 0;
+  while (rows.size(full) != 2) ++full;
+  int c = 0;
+  while (dense(static_cast<int>(full), c) != 0) ++c;
+  rows.set(full, c, 1);
+  dense(static_cast<int>(full), c) = 1;
+  EXPECT_FALSE(rows.homed());
+  EXPECT_EQ(Eigen::MatrixXi(rows.compressed(n, n)), dense);
+  EXPECT_EQ(Eigen::MatrixXi(rows.matrix().cast<int>()).topLeftCorner(n, n), dense);
+}
+
+// The mesh's E-row stores (d0, d1ᵀ) stay homed through local operations on
+// a manifold mesh, so the fast derivations are the ones in use; a fin needs
+// three faces in a d1ᵀ row and turns that store general.
+TEST(IncidenceMesh, EdgeRowsStayHomedWhileManifold) {
+  Inc m;
+  genmesh::build_mesh(genmesh::make_icosphere(2), m);
+  EXPECT_TRUE(m.d0_rows().homed());
+  EXPECT_TRUE(m.d1t_rows().homed());
+  random_local_operations(m, 23, 3000, true);
+  EXPECT_TRUE(m.d0_rows().homed());
+  EXPECT_TRUE(m.d1t_rows().homed());
+  Hm b;
+  genmesh::build_mesh(genmesh::to_soup(m), b);
+  Inc again;
+  genmesh::build_mesh(genmesh::to_soup(m), again);
+  expect_same_traversal(again, b);
+  const Inc copy = m; // copies stay homed
+  EXPECT_TRUE(copy.d0_rows().homed() && copy.d1t_rows().homed());
+
+  const Inc fin = Inc::from_soup(fin_soup());
+  EXPECT_TRUE(fin.d0_rows().homed());
+  EXPECT_FALSE(fin.d1t_rows().homed());
+  EXPECT_EQ(fin.d1t_rows().size(fin.manifold_report().fin_edges.at(0).idx()), 3);
+}
+
+// Low-level edits without update_face_orders(): next() and prev() must not
+// read a stale turn record. Reversing edges (take both sides out of their
+// faces, turn the edge around, put each side into the other face) moves a
+// recorded side into a face already marked, which only add_side() can
+// clear; swapping vertices' incidences changes cycles without touching d1.
+TEST(IncidenceMesh, TurnRecordsNeverStale) {
+  const genmesh::Polygon_soup soup = genmesh::make_icosphere(2);
+  Inc m;
+  genmesh::build_mesh(soup, m);
+  std::mt19937 rng(31);
+  auto expect_same_as_recomputed = [&](const char* what) {
+    Inc fresh = m; // the same matrices, records recomputed from them
+    fresh.update_face_orders();
+    for (Halfedge_index h : halfedges(m)) {
+      ASSERT_EQ(m.next(h), fresh.next(h)) << what << ' ' << h;
+      ASSERT_EQ(m.prev(h), fresh.prev(h)) << what << ' ' << h;
+      ASSERT_EQ(m.prev(m.next(h)), h) << what << ' ' << h;
+      ASSERT_EQ(m.target(h), m.source(m.next(h))) << what << ' ' << h;
+    }
+  };
+  for (int step = 0; step < 40; ++step) {
+    Edge_index e(static_cast<std::uint32_t>(rng() % m.edges_size()));
+    while (m.is_removed(e)) e = Edge_index(static_cast<std::uint32_t>(rng() % m.edges_size()));
+    const Halfedge_index h0 = m.halfedge(e, 0), h1 = m.halfedge(e, 1);
+    const Face_index fa = m.face(h0), fb = m.face(h1);
+    const Vertex_index u = m.source(h0), v = m.target(h0);
+    m.remove_side(fa, h0);
+    m.remove_side(fb, h1);
+    m.set_edge_vertices(e, v, u);
+    m.add_side(fa, h1);
+    m.add_side(fb, h0);
+    if (step % 5 == 4 && m.degree(fa) == 3 && m.degree(fb) == 3) {
+      // Join fa and fb into a quad: their sides other than e move into a new
+      // face at other row positions; removing a face leaves its sides'
+      // records behind, which add_side() must clear.
+      m.update_face_orders(); // the sides have records now
+      std::vector<Halfedge_index> sides;
+      for (Halfedge_index x = m.next(h1); x != h1; x = m.next(x)) sides.push_back(x);
+      for (Halfedge_index x = m.next(h0); x != h0; x = m.next(x)) sides.push_back(x);
+      m.remove_face(fa);
+      m.remove_face(fb);
+      m.remove_edge(e);
+      const Face_index q = m.add_face();
+      for (Halfedge_index x : sides) m.add_side(q, x);
+      ASSERT_EQ(m.degree(q), 4u);
+    }
+    if (step % 4 == 3) {
+      const Vertex_index p(static_cast<std::uint32_t>(rng() % m.vertices_size()));
+      const Vertex_index q(static_cast<std::uint32_t>(rng() % m.vertices_size()));
+      if (p != q) m.swap_incidences(p, q);
+    }
+    expect_same_as_recomputed("before update_face_orders");
+    if (step % 10 == 9) {
+      m.update_face_orders();
+      expect_same_as_recomputed("after update_face_orders");
+    }
+  }
+  EXPECT_TRUE(genmesh::check_mesh(m).ok()) << genmesh::to_string(genmesh::check_mesh(m));
 }
 
 // ---- native local operations against the generic ones ---------------------
@@ -790,11 +934,9 @@ bool stricter(bool native, bool generic) {
   return !native && generic;
 }
 
-void random_sequence(const genmesh::Polygon_soup& soup, unsigned seed, int steps,
-                     std::map<std::string, int>& counts) {
-  Twin t(soup);
-  t.counts = &counts;
-  std::mt19937 rng(seed);
+// Runs up to `steps` random operations on both meshes of t, comparing them
+// after each; returns how many applied.
+std::size_t random_steps(Twin& t, std::mt19937& rng, int steps) {
   std::uniform_int_distribution<int> op(0, 99);
   std::size_t applied = 0;
   for (int step = 0; step < steps && !::testing::Test::HasFailure(); ++step) {
@@ -874,7 +1016,15 @@ void random_sequence(const genmesh::Polygon_soup& soup, unsigned seed, int steps
   }
   t.expect_valid("end");
   expect_same_edges(t);
-  EXPECT_GT(applied, static_cast<std::size_t>(steps) / 4);
+  return applied;
+}
+
+void random_sequence(const genmesh::Polygon_soup& soup, unsigned seed, int steps,
+                     std::map<std::string, int>& counts) {
+  Twin t(soup);
+  t.counts = &counts;
+  std::mt19937 rng(seed);
+  EXPECT_GT(random_steps(t, rng, steps), static_cast<std::size_t>(steps) / 4);
 }
 
 TEST(IncidenceOperations, RandomSequencesEqualHalfedgeMesh) {
@@ -895,6 +1045,319 @@ TEST(IncidenceOperations, RandomSequencesEqualHalfedgeMesh) {
   std::string summary;
   for (const auto& [op, n] : counts) summary += op + " " + std::to_string(n) + ", ";
   RecordProperty("operations", summary);
+}
+
+// ---- collect_garbage ---------------------------------------------------------
+
+// The maps of one element kind: as long as the old bound, removed elements to
+// null, the live ones onto [0, live count) one to one.
+template <class Index>
+void expect_compaction(const std::vector<Index>& map, std::size_t old_bound, std::size_t live,
+                       const auto& is_removed_before) {
+  ASSERT_EQ(map.size(), old_bound);
+  std::vector<char> hit(live, 0);
+  for (std::size_t i = 0; i < map.size(); ++i) {
+    if (is_removed_before(i)) {
+      EXPECT_FALSE(map[i].is_valid()) << i;
+      continue;
+    }
+    ASSERT_TRUE(map[i].is_valid()) << i;
+    ASSERT_LT(map[i].idx(), live) << i;
+    EXPECT_FALSE(hit[map[i].idx()]) << i;
+    hit[map[i].idx()] = 1;
+  }
+}
+
+// now = old after collect_garbage with maps m: every live element of old is
+// in now under its new index with the same incidences (matrix entries with
+// the same signs), points and, on a manifold mesh, the same next/prev/face.
+void expect_renumbered(const Inc& old, const Inc& now, const genmesh::Garbage_collection_maps& m) {
+  ASSERT_EQ(now.vertices_size(), num_vertices(old));
+  ASSERT_EQ(now.edges_size(), num_edges(old));
+  ASSERT_EQ(now.faces_size(), num_faces(old));
+  EXPECT_EQ(num_vertices(now), now.vertices_size());
+  EXPECT_EQ(num_edges(now), now.edges_size());
+  EXPECT_EQ(num_faces(now), now.faces_size());
+  EXPECT_FALSE(now.has_garbage());
+  expect_compaction(m.vertices, old.vertices_size(), num_vertices(old),
+                    [&](std::size_t i) { return old.is_removed(Vertex_index(static_cast<std::uint32_t>(i))); });
+  expect_compaction(m.edges, old.edges_size(), num_edges(old),
+                    [&](std::size_t i) { return old.is_removed(Edge_index(static_cast<std::uint32_t>(i))); });
+  expect_compaction(m.faces, old.faces_size(), num_faces(old),
+                    [&](std::size_t i) { return old.is_removed(Face_index(static_cast<std::uint32_t>(i))); });
+  ASSERT_EQ(m.halfedges.size(), old.halfedges_size());
+  auto mv = [&](Vertex_index v) { return v.is_valid() ? m.vertices[v.idx()] : v; };
+  auto mf = [&](Face_index f) { return f.is_valid() ? m.faces[f.idx()] : f; };
+  for (Vertex_index v : vertices(old)) {
+    ASSERT_EQ(now.point(mv(v)), old.point(v)) << v;
+    ASSERT_EQ(now.degree(mv(v)), old.degree(v)) << v;
+  }
+  for (Edge_index e : edges(old)) {
+    const Edge_index ne = m.edges[e.idx()];
+    for (unsigned s : {0u, 1u}) {
+      const Halfedge_index h = old.halfedge(e, s);
+      ASSERT_EQ(m.halfedges[h.idx()], now.halfedge(ne, s)) << h; // directions kept
+    }
+    const auto& r = old.d0_rows();
+    ASSERT_EQ(now.d0_rows().size(ne.idx()), r.size(e.idx())) << e;
+    for (int k = 0; k < r.size(e.idx()); ++k)
+      ASSERT_EQ(now.d0_rows().at(ne.idx(), static_cast<int>(mv(Vertex_index(static_cast<std::uint32_t>(r.cols(e.idx())[k]))).idx())),
+                r.vals(e.idx())[k]) << e;
+  }
+  for (Face_index f : faces(old)) {
+    const Face_index nf = mf(f);
+    const auto& r = old.d1_rows();
+    ASSERT_EQ(now.d1_rows().size(nf.idx()), r.size(f.idx())) << f;
+    for (int k = 0; k < r.size(f.idx()); ++k)
+      ASSERT_EQ(now.d1_rows().at(nf.idx(), static_cast<int>(m.edges[static_cast<std::size_t>(r.cols(f.idx())[k])].idx())),
+                r.vals(f.idx())[k]) << f;
+    std::vector<Vertex_index> a, b = now.face_vertices(nf);
+    for (Vertex_index v : old.face_vertices(f)) a.push_back(mv(v));
+    std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
+    std::rotate(b.begin(), std::min_element(b.begin(), b.end()), b.end());
+    ASSERT_EQ(a, b) << f;
+  }
+  // The transposes were rebuilt too: d0ᵀ and d1ᵀ rows are those of d0 and d1.
+  auto same = [](Eigen::SparseMatrix<int> x, const Eigen::SparseMatrix<int>& y) {
+    x -= y;
+    x.prune([](Eigen::Index, Eigen::Index, int v) { return v != 0; });
+    return x.nonZeros() == 0;
+  };
+  const Eigen::SparseMatrix<int> d0 = now.d0(), d1 = now.d1();
+  EXPECT_TRUE(same(Eigen::SparseMatrix<int>(now.d0t_rows().compressed(now.vertices_size(), now.edges_size())),
+                   Eigen::SparseMatrix<int>(d0.transpose())));
+  EXPECT_TRUE(same(Eigen::SparseMatrix<int>(now.d1t_rows().compressed(now.edges_size(), now.faces_size())),
+                   Eigen::SparseMatrix<int>(d1.transpose())));
+  EXPECT_EQ(now.is_manifold(), old.is_manifold());
+  if (!old.is_manifold()) return;
+  for (Halfedge_index h : halfedges(old)) {
+    const Halfedge_index nh = m.halfedges[h.idx()];
+    ASSERT_EQ(now.target(nh), mv(old.target(h))) << h;
+    ASSERT_EQ(now.face(nh), mf(old.face(h))) << h;
+    ASSERT_EQ(now.next(nh), m.halfedges[old.next(h).idx()]) << h;
+    ASSERT_EQ(now.prev(nh), m.halfedges[old.prev(h).idx()]) << h;
+  }
+}
+
+void expect_identity(const genmesh::Garbage_collection_maps& m, const Inc& g) {
+  ASSERT_EQ(m.vertices.size(), g.vertices_size());
+  ASSERT_EQ(m.halfedges.size(), g.halfedges_size());
+  ASSERT_EQ(m.edges.size(), g.edges_size());
+  ASSERT_EQ(m.faces.size(), g.faces_size());
+  for (std::uint32_t i = 0; i < m.vertices.size(); ++i) ASSERT_EQ(m.vertices[i], Vertex_index(i));
+  for (std::uint32_t i = 0; i < m.halfedges.size(); ++i) ASSERT_EQ(m.halfedges[i], Halfedge_index(i));
+  for (std::uint32_t i = 0; i < m.edges.size(); ++i) ASSERT_EQ(m.edges[i], Edge_index(i));
+  for (std::uint32_t i = 0; i < m.faces.size(); ++i) ASSERT_EQ(m.faces[i], Face_index(i));
+}
+
+// Collects a copy of t's meshes with `order`: the same maps and the same mesh
+// on both backends, each survivor renumbered with its incidences, a valid
+// compact result, identity on a second call. Returns the maps.
+genmesh::Garbage_collection_maps collect_both(const Twin& t, genmesh::Garbage_order order) {
+  Inc a = t.a;
+  Hm b = t.b;
+  const std::size_t bytes_before = t.a.memory_bytes();
+  const auto ma = a.collect_garbage(order);
+  const auto mb = genmesh::collect_garbage(b, order);
+  EXPECT_EQ(ma.vertices, mb.vertices);
+  EXPECT_EQ(ma.halfedges, mb.halfedges);
+  EXPECT_EQ(ma.edges, mb.edges);
+  EXPECT_EQ(ma.faces, mb.faces);
+  EXPECT_EQ(genmesh::to_soup(a), genmesh::to_soup(b));
+  if (order == genmesh::Garbage_order::stable) {
+    EXPECT_EQ(genmesh::to_soup(a), genmesh::to_soup(t.a)); // relative order kept
+  }
+  expect_same_traversal(a, b, false);
+  expect_renumbered(t.a, a, ma);
+  const auto r = genmesh::check_mesh(a);
+  EXPECT_TRUE(r.ok()) << genmesh::to_string(r);
+  const Algebra_facts alg = algebra_facts(a);
+  EXPECT_TRUE(alg.boundary_of_boundary_vanishes);
+  EXPECT_TRUE(alg.laplacian);
+  EXPECT_LE(a.memory_bytes(), bytes_before);
+  expect_identity(a.collect_garbage(order), a);
+  return ma;
+}
+
+TEST(IncidenceGarbage, RandomSequencesThenCollectEqualHalfedgeMesh) {
+  Hm grid;
+  genmesh::build_mesh(genmesh::make_grid_with_hole(9), grid);
+  genmesh::triangulate_faces(grid);
+  const std::vector<std::pair<genmesh::Polygon_soup, unsigned>> cases{{genmesh::make_icosphere(2), 11u},
+                                                                      {genmesh::to_soup(grid), 12u}};
+  for (const auto& [soup, seed] : cases) {
+    SCOPED_TRACE(seed);
+    Twin t(soup);
+    std::mt19937 rng(seed);
+    EXPECT_GT(random_steps(t, rng, 400), 100u);
+    // End on a few collapses and a face removal, so that garbage of every
+    // kind is left unrecycled.
+    int collapsed = 0;
+    for (std::uint32_t i = 0; i < t.a.edges_size() && collapsed < 3; i += 7)
+      if (t.a.is_valid(Edge_index(i)) && t.apply(OP(genmesh::collapse_edge(Edge_index(i), g, rec)), "collapse"))
+        ++collapsed;
+    for (std::uint32_t i = 0; i < t.a.halfedges_size(); i += 5) {
+      const Halfedge_index h(i);
+      if (t.a.is_valid(h) && !t.a.is_border(h) && genmesh::euler::can_remove_face(h, t.a) &&
+          t.apply(OP(genmesh::euler::remove_face(h, g, rec) ? std::optional<int>(1) : std::nullopt), "remove_face"))
+        break;
+    }
+    // Garbage in every kind, not all of it recycled.
+    ASSERT_TRUE(t.a.has_garbage());
+    ASSERT_LT(num_vertices(t.a), t.a.vertices_size());
+    ASSERT_LT(num_edges(t.a), t.a.edges_size());
+    ASSERT_LT(num_faces(t.a), t.a.faces_size());
+    const auto stable = collect_both(t, genmesh::Garbage_order::stable);
+    const auto like_sm = collect_both(t, genmesh::Garbage_order::like_surface_mesh);
+    EXPECT_NE(stable.vertices, like_sm.vertices); // the two orders really differ
+    EXPECT_NE(stable.faces, like_sm.faces);
+  }
+}
+
+TEST(IncidenceGarbage, OperationsKeepWorkingAfterCollection) {
+  for (const auto order : {genmesh::Garbage_order::stable, genmesh::Garbage_order::like_surface_mesh}) {
+    Twin t(genmesh::make_icosphere(2));
+    std::mt19937 rng(21);
+    random_steps(t, rng, 300);
+    for (int round = 0; round < 3; ++round) {
+      SCOPED_TRACE(round);
+      ASSERT_TRUE(t.a.has_garbage());
+      const auto ma = t.a.collect_garbage(order);
+      const auto mb = t.b.collect_garbage(order);
+      ASSERT_EQ(ma.halfedges, mb.halfedges);
+      ASSERT_EQ(t.a.vertices_size(), num_vertices(t.a));
+      expect_same_edges(t);
+      EXPECT_EQ(genmesh::to_soup(t.a), genmesh::to_soup(t.b));
+      // New elements are appended (the free lists are empty) on both.
+      const std::size_t ne = t.a.edges_size();
+      EXPECT_GT(random_steps(t, rng, 300), 75u); // compares both meshes at every step
+      EXPECT_GT(t.a.edges_size(), ne);
+      EXPECT_EQ(genmesh::to_soup(t.a), genmesh::to_soup(t.b));
+    }
+  }
+}
+
+// A fin and a bow-tie, plus faces that are removed (with their edges and
+// vertices) before collecting: the fin, the bow-tie and everything else
+// survive, renumbered.
+//   faces 0..2: the fin on edge 0-1 (fin_soup); 3, 4: a bow-tie at vertex 5;
+//   5: 1 2 10 (next to face 1), 6: 11 12 13 (apart), 7: 3 1 14 (next to face 0)
+TEST(IncidenceGarbage, NonManifoldMeshKeepsItsReport) {
+  genmesh::Polygon_soup s = fin_soup();
+  for (int i = 5; i < 15; ++i) s.add_point(i, i % 3, i % 5);
+  s.add_face({5, 6, 7});
+  s.add_face({5, 8, 9});
+  s.add_face({1, 2, 10});
+  s.add_face({11, 12, 13});
+  s.add_face({3, 1, 14});
+  for (const auto order : {genmesh::Garbage_order::stable, genmesh::Garbage_order::like_surface_mesh}) {
+    Inc m = Inc::from_soup(s);
+    // Remove faces 5 and 6 with the edges and vertices only they used.
+    for (Face_index f : {Face_index(5), Face_index(6)}) {
+      const std::vector<Vertex_index> corners = m.face_vertices(f);
+      std::vector<Edge_index> sides;
+      for (int k = 0; k < m.d1_rows().size(f.idx()); ++k)
+        sides.emplace_back(static_cast<std::uint32_t>(m.d1_rows().cols(f.idx())[k]));
+      m.remove_face(f);
+      for (Edge_index e : sides)
+        if (m.d1t_rows().size(e.idx()) == 0) m.remove_edge(e);
+      for (Vertex_index v : corners)
+        if (m.is_isolated(v)) m.remove_vertex(v);
+    }
+    ASSERT_EQ(num_faces(m), 6u);
+    ASSERT_EQ(num_vertices(m), 11u); // 10, 11, 12, 13 removed
+    const Inc old = m;
+    const auto r0 = old.manifold_report();
+    ASSERT_EQ(r0.fin_edges.size(), 1u);
+    ASSERT_EQ(r0.non_manifold_vertices.size(), 1u);
+    const genmesh::Polygon_soup soup0 = old.polygon_soup();
+
+    const auto maps = collect_garbage(m, order);
+    expect_renumbered(old, m, maps);
+    const auto r = m.manifold_report();
+    auto mapped = [](auto list, const auto& map) {
+      for (auto& x : list) x = map[x.idx()];
+      std::sort(list.begin(), list.end());
+      return list;
+    };
+    EXPECT_EQ(r.fin_edges, mapped(r0.fin_edges, maps.edges));
+    EXPECT_EQ(r.misoriented_edges, mapped(r0.misoriented_edges, maps.edges));
+    EXPECT_EQ(r.non_manifold_vertices, mapped(r0.non_manifold_vertices, maps.vertices));
+    EXPECT_FALSE(m.is_manifold());
+    // Queries on the renumbered bad elements still refuse; the rest work.
+    EXPECT_THROW((void)m.face(m.halfedge(r.fin_edges[0])), genmesh::invalid_input);
+    EXPECT_THROW((void)m.halfedge(r.non_manifold_vertices[0]), genmesh::invalid_input);
+    const Halfedge_index from14 = m.halfedge(maps.vertices[1], maps.vertices[14]);
+    ASSERT_TRUE(from14.is_valid());
+    EXPECT_EQ(m.face(from14), maps.faces[7]);
+    EXPECT_TRUE(m.is_border(m.opposite(from14)));
+    if (order == genmesh::Garbage_order::stable) {
+      EXPECT_EQ(m.polygon_soup(), soup0);
+    } else {
+      EXPECT_EQ(maps.vertices[14], Vertex_index(10)); // the last vertex fills the first hole
+    }
+    EXPECT_TRUE(algebra_facts(m).boundary_of_boundary_vanishes);
+    expect_identity(m.collect_garbage(order), m);
+  }
+}
+
+TEST(IncidenceGarbage, NoGarbageGivesIdentityAndKeepsTheMesh) {
+  Inc a;
+  genmesh::build_mesh(genmesh::make_torus(6, 5, true), a);
+  const Inc before = a;
+  ASSERT_FALSE(a.has_garbage());
+  expect_identity(a.collect_garbage(), a);
+  expect_identity(a.collect_garbage(genmesh::Garbage_order::like_surface_mesh), a);
+  EXPECT_EQ(genmesh::to_soup(a), genmesh::to_soup(before));
+  EXPECT_EQ(a.d1_rows().compressed(a.faces_size(), a.edges_size()).toDense(),
+            before.d1_rows().compressed(before.faces_size(), before.edges_size()).toDense());
+  EXPECT_EQ(a.d0_rows().compressed(a.edges_size(), a.vertices_size()).toDense(),
+            before.d0_rows().compressed(before.edges_size(), before.vertices_size()).toDense());
+  // Garbage that was all recycled: identity maps too, and has_garbage() is
+  // cleared as on Halfedge_mesh.
+  Twin t(genmesh::make_grid(2, 2));
+  ASSERT_TRUE(t.apply(OP(genmesh::euler::remove_face(t.b.halfedge(Face_index(0)), g, rec) ? std::optional<int>(1) : std::nullopt), "remove"));
+  const std::vector<Vertex_index> tri{Vertex_index(0), Vertex_index(1), Vertex_index(4)};
+  ASSERT_TRUE(t.apply(OP(genmesh::euler::add_face(tri, g, rec)), "add back"));
+  ASSERT_TRUE(t.a.has_garbage());
+  ASSERT_EQ(t.a.faces_size(), num_faces(t.a));
+  const genmesh::Polygon_soup soup = genmesh::to_soup(t.a);
+  const auto ma = t.a.collect_garbage();
+  expect_identity(ma, t.a);
+  EXPECT_EQ(ma.halfedges, t.b.collect_garbage().halfedges);
+  EXPECT_FALSE(t.a.has_garbage());
+  EXPECT_FALSE(t.b.has_garbage());
+  EXPECT_EQ(genmesh::to_soup(t.a), soup);
+  expect_same_edges(t);
+  // A live edge without ends is refused, leaving the mesh as it was.
+  Inc c;
+  genmesh::build_mesh(genmesh::make_cube(), c);
+  c.remove_face(Face_index(0));
+  const Edge_index loose = c.add_edge();
+  const genmesh::Polygon_soup cube_soup = c.polygon_soup();
+  EXPECT_THROW(c.collect_garbage(), genmesh::invalid_input);
+  EXPECT_EQ(c.polygon_soup(), cube_soup);
+  EXPECT_TRUE(c.has_garbage());
+  EXPECT_EQ(c.faces_size(), 6u);
+  c.set_edge_vertices(loose, Vertex_index(0), Vertex_index(6));
+  const auto mc = c.collect_garbage();
+  EXPECT_EQ(c.faces_size(), 5u);
+  EXPECT_EQ(c.target(c.halfedge(mc.edges[loose.idx()], 0)), mc.vertices[6]);
+}
+
+// The example of docs/incidence_mesh.md ("collect_garbage").
+TEST(IncidenceGarbage, DocumentationExample) {
+  genmesh::Incidence_mesh<> m;
+  genmesh::build_mesh(genmesh::make_icosphere(2), m);
+  const std::size_t nv = num_vertices(m), ne = num_edges(m), nf = num_faces(m);
+  ASSERT_TRUE(genmesh::collapse_edge(genmesh::Edge_index(7), m).has_value());
+  EXPECT_EQ(num_vertices(m), nv - 1);
+  EXPECT_EQ(num_edges(m), ne - 3);
+  EXPECT_EQ(num_faces(m), nf - 2);
+  const genmesh::Garbage_collection_maps maps = m.collect_garbage();
+  EXPECT_TRUE(m.vertices_size() == num_vertices(m) && !m.has_garbage());
+  EXPECT_TRUE(maps.vertices[100].is_valid());
+  EXPECT_EQ(m.edges_size(), ne - 3);
 }
 
 } // namespace

@@ -217,6 +217,39 @@ struct Garbage_collection_maps {
   std::vector<Face_index> faces;
 };
 
+namespace detail {
+
+/// Old -> new indices for one element kind, as collect_garbage() renumbers
+/// (shared by Halfedge_mesh and Incidence_mesh): removed[i] maps to the null
+/// index, survivors to [0, live count) in `order`.
+inline std::vector<std::uint32_t> compaction_map(const std::vector<bool>& removed, Garbage_order order) {
+  constexpr std::uint32_t null = Vertex_index::invalid_value;
+  const std::size_t n = removed.size();
+  std::vector<std::uint32_t> map(n);
+  if (order == Garbage_order::stable) {
+    std::uint32_t k = 0;
+    for (std::size_t i = 0; i < n; ++i) map[i] = removed[i] ? null : k++;
+    return map;
+  }
+  // Surface_mesh's two-finger swap: i0 finds holes from the front, i1 live
+  // elements from the back; i1 moves to i0.
+  for (std::size_t i = 0; i < n; ++i) map[i] = removed[i] ? null : static_cast<std::uint32_t>(i);
+  if (n == 0) return map;
+  std::vector<bool> r = removed;
+  std::size_t i0 = 0, i1 = n - 1;
+  while (true) {
+    while (!r[i0] && i0 < i1) ++i0;
+    while (r[i1] && i0 < i1) --i1;
+    if (i0 >= i1) break;
+    map[i1] = static_cast<std::uint32_t>(i0);
+    r[i0] = false;
+    r[i1] = true;
+  }
+  return map;
+}
+
+} // namespace detail
+
 /// A range that is also a std::pair of iterators (CGAL::Iterator_range
 /// style: .first/.second, begin()/end(), size(), empty()). size() is O(1) for
 /// the element ranges (vertices(), faces(), ...), a walk for the ranges
@@ -827,9 +860,9 @@ public:
     const std::uint32_t ne = static_cast<std::uint32_t>(edges_size());
     const std::uint32_t nf = static_cast<std::uint32_t>(faces_size());
     std::vector<std::uint32_t> hmap(2 * std::size_t(ne));
-    const std::vector<std::uint32_t> vmap = compaction_map(vremoved_, order);
-    const std::vector<std::uint32_t> emap = compaction_map(eremoved_, order);
-    const std::vector<std::uint32_t> fmap = compaction_map(fremoved_, order);
+    const std::vector<std::uint32_t> vmap = detail::compaction_map(vremoved_, order);
+    const std::vector<std::uint32_t> emap = detail::compaction_map(eremoved_, order);
+    const std::vector<std::uint32_t> fmap = detail::compaction_map(fremoved_, order);
     auto kept = [](const std::vector<std::uint32_t>& map) {
       return static_cast<std::uint32_t>(std::ranges::count_if(map, [](std::uint32_t i) { return i != invalid; }));
     };
@@ -1140,32 +1173,6 @@ protected:
   template <class Key>
   const detail::Property_container<Key>& container() const {
     return const_cast<Halfedge_connectivity*>(this)->container<Key>();
-  }
-
-  /// Old -> new indices for one element kind (see collect_garbage).
-  static std::vector<std::uint32_t> compaction_map(const std::vector<bool>& removed, Garbage_order order) {
-    const std::size_t n = removed.size();
-    std::vector<std::uint32_t> map(n);
-    if (order == Garbage_order::stable) {
-      std::uint32_t k = 0;
-      for (std::size_t i = 0; i < n; ++i) map[i] = removed[i] ? invalid : k++;
-      return map;
-    }
-    // Surface_mesh's two-finger swap: i0 finds holes from the front, i1 live
-    // elements from the back; i1 moves to i0.
-    for (std::size_t i = 0; i < n; ++i) map[i] = removed[i] ? invalid : static_cast<std::uint32_t>(i);
-    if (n == 0) return map;
-    std::vector<bool> r = removed;
-    std::size_t i0 = 0, i1 = n - 1;
-    while (true) {
-      while (!r[i0] && i0 < i1) ++i0;
-      while (r[i1] && i0 < i1) --i1;
-      if (i0 >= i1) break;
-      map[i1] = static_cast<std::uint32_t>(i0);
-      r[i0] = false;
-      r[i1] = true;
-    }
-    return map;
   }
 
   friend struct detail::Halfedge_mesh_bulk; // bulk growth (detail/halfedge_mesh_bulk.h)

@@ -10,12 +10,15 @@
 // (edge, side), h = 2e + side, side 0 running along the edge (source →
 // target as in d0); opposite(h) = h ^ 1 and edge(h) = h / 2 are arithmetic,
 // and next, prev, face, target, halfedge(v), halfedge(f) are derived from the
-// matrices on each call, in O(local degree). Two derived helpers make the
-// derivation cheap and are kept up to date by every edit: per face an order
-// word (for each position of its d1 row, the position of the cyclic
-// successor, 4 bits each), so next() reads no d0 row; per vertex the number
-// of its edges with fewer than two faces, so halfedge(v) does not scan an
-// interior vertex's edges.
+// matrices on each call, in O(local degree). The E-row matrices d0 and d1ᵀ
+// keep row e at entries [2e, 2e + 2) (home slots, see detail::Incidence_rows)
+// while every row fits, so target() and face() read one short row without
+// the outer index. Two derived helpers make the derivation cheap and are
+// kept up to date by every edit: per halfedge a turn record (where next(h)
+// and prev(h) sit in its face's d1 row, 4 bits each), so next() reads no d0
+// row and does not search the face's row; per vertex the number of its edges
+// with fewer than two faces, so halfedge(v) does not scan an interior
+// vertex's edges.
 //
 // Guarantees:
 // - It models HalfedgeGraph, HalfedgeListGraph, VertexListGraph,
@@ -53,17 +56,17 @@
 //   native operations refuse where the generic ones would make one, and where
 //   they would pinch a vertex into two border gaps: see
 //   detail/incidence_operations.h).
-// - next() scans the face's d1 row for edge(h) (O(d) for a face of degree
-//   d) and looks the successor up in the order word; faces of more than 16
-//   sides, and faces edited by the low-level calls below since the last
-//   update_face_orders(), fall back to scanning d0 rows (O(d) per next).
+// - next() reads h's turn record, face(h)'s d1ᵀ row and one entry of the
+//   face's d1 row: O(1); faces of more than 16 sides, and faces edited by
+//   the low-level calls below since the last update_face_orders(), fall back
+//   to scanning d0 rows (O(d) per next).
 //   Measured (benchmarks/bench_incidence.cpp, table in docs/benchmarks.md):
 //   next() ~16× slower than Halfedge_mesh, circulation 25–60× (a chain of
 //   five dependent row reads per step), local operations 9–19×; 136 bytes
 //   per triangle against 66.
 // - Local operations need a manifold mesh; on a mesh loaded with
 //   non-manifold elements they refuse (predicates false, operations empty).
-// - No collect_garbage(): removed indices are recycled, never compacted.
+// - collect_garbage() rebuilds all four matrices: O(mesh), not O(garbage).
 #pragma once
 
 #include <genmesh/concepts.h>
@@ -80,6 +83,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -102,22 +106,44 @@ namespace detail {
 /// room, the buffer grows by doubling, and abandoned slots are compacted
 /// away once they exceed half of the live slots. Eigen's own insert() would shift
 /// every later row, O(non-zeros), which is why it is not used.
+///
+/// Home slots: a store made with a home width K (the mesh uses K = 2 for its
+/// E-row matrices d0 and d1ᵀ, whose rows hold an edge's two ends and, on a
+/// manifold mesh, at most two faces) keeps row r at [K r, K r + K) for as
+/// long as no row needs more than K entries, with the values past a row's
+/// end zero. While homed() holds, a reader finds row r at K r without
+/// reading the outer index or the non-zero count (home_cols(), home_vals()),
+/// which saves two dependent loads per derived next(), face() or target().
+/// The first row to outgrow K turns the store into the general layout above
+/// for good (fins of a non-manifold load do so for d1ᵀ).
 class Incidence_rows {
 public:
   using Matrix = Eigen::SparseMatrix<signed char, Eigen::RowMajor, int>;
 
   Incidence_rows() { reset(); }
-  Incidence_rows(const Incidence_rows& o) : m_(o.m_) { relayout_after_copy(); }
+  /// A store with home slots of `home_width` entries, a power of two (see above).
+  explicit Incidence_rows(int home_width) : home_(home_width), shift_(std::countr_zero(unsigned(home_width))) {
+    if (home_width <= 0 || !std::has_single_bit(unsigned(home_width)))
+      throw invalid_input("Incidence_rows: the home width must be a power of two");
+    reset();
+  }
+  Incidence_rows(const Incidence_rows& o) : m_(o.m_), home_(o.home_), shift_(o.shift_) {
+    relayout_after_copy(o.homed_);
+  }
   // Eigen 3.4's SparseMatrix has no move constructor (a "move" would copy
   // into compressed form): swap instead.
-  Incidence_rows(Incidence_rows&& o) noexcept : cap_(std::move(o.cap_)), tail_(o.tail_), garbage_(o.garbage_) {
+  Incidence_rows(Incidence_rows&& o) noexcept
+      : cap_(std::move(o.cap_)), tail_(o.tail_), garbage_(o.garbage_), home_(o.home_), shift_(o.shift_),
+        homed_(o.homed_) {
     m_.swap(o.m_);
     o.reset();
   }
   Incidence_rows& operator=(const Incidence_rows& o) {
     if (this != &o) {
       m_ = o.m_;
-      relayout_after_copy();
+      home_ = o.home_;
+      shift_ = o.shift_;
+      relayout_after_copy(o.homed_);
     }
     return *this;
   }
@@ -127,13 +153,16 @@ public:
       cap_.swap(o.cap_);
       std::swap(tail_, o.tail_);
       std::swap(garbage_, o.garbage_);
+      std::swap(home_, o.home_);
+      std::swap(shift_, o.shift_);
+      std::swap(homed_, o.homed_);
       o.reset();
     }
     return *this;
   }
   ~Incidence_rows() = default;
 
-  /// Back to no rows and an empty buffer.
+  /// Back to no rows and an empty buffer (homed if the store has a home width).
   void reset() {
     m_ = Matrix(1, 1);
     m_.uncompress();
@@ -143,6 +172,21 @@ public:
     tail_ = 0;
     garbage_ = 0;
     m_.data().resize(0);
+    homed_ = false;
+    if (home_ > 0) home_rows_(0);
+  }
+
+  /// Every row sits in its home slot (see above).
+  [[nodiscard]] bool homed() const { return homed_; }
+  /// The home width K (0: none).
+  [[nodiscard]] int home_width() const { return home_; }
+  /// Row r's columns and values at its home slot, K entries, the values past
+  /// the row's end zero. Only while homed().
+  [[nodiscard]] const int* home_cols(std::uint32_t r) const {
+    return m_.innerIndexPtr() + (std::size_t(r) << shift_);
+  }
+  [[nodiscard]] const signed char* home_vals(std::uint32_t r) const {
+    return m_.valuePtr() + (std::size_t(r) << shift_);
   }
 
   /// Room for rows [0, rows) and columns [0, cols) (doubling).
@@ -153,6 +197,7 @@ public:
     const std::size_t c = cols <= c0 ? c0 : std::max(cols, 2 * c0);
     m_.conservativeResize(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c));
     cap_.resize(r, 0);
+    if (homed_ && r > r0) home_rows_(r0);
   }
   /// Room for `extra` more entries in the buffer.
   void reserve_entries(std::size_t entries) {
@@ -197,6 +242,7 @@ public:
       return;
     }
     if (n == cap_[r]) {
+      homed_ = false; // the general layout from here on
       relocate(r, std::max(2, 2 * n));
       cs = m_.innerIndexPtr() + m_.outerIndexPtr()[r];
       vs = m_.valuePtr() + m_.outerIndexPtr()[r];
@@ -221,9 +267,13 @@ public:
       cs[j - 1] = cs[j];
       vs[j - 1] = vs[j];
     }
+    vs[n - 1] = 0; // past the row's end: zero (see home slots)
     m_.innerNonZeroPtr()[r] = n - 1;
   }
-  void clear_row(std::uint32_t r) { m_.innerNonZeroPtr()[r] = 0; }
+  void clear_row(std::uint32_t r) {
+    std::fill_n(m_.valuePtr() + m_.outerIndexPtr()[r], size(r), static_cast<signed char>(0));
+    m_.innerNonZeroPtr()[r] = 0;
+  }
 
   /// Replaces the whole layout by rows given in compressed form (begin has
   /// rows + 1 offsets into cols/vals, each row sorted by column). Slots are
@@ -231,7 +281,19 @@ public:
   void assign(std::size_t rows, std::size_t ncols, const std::vector<std::uint32_t>& begin,
               const std::vector<int>& cols, const std::vector<signed char>& vals) {
     reset();
+    bool fits = home_ > 0;
+    for (std::size_t r = 0; fits && r < rows; ++r) fits = begin[r + 1] - begin[r] <= std::uint32_t(home_);
+    if (!fits) homed_ = false;
     reserve_shape(std::max<std::size_t>(rows, 1), std::max<std::size_t>(ncols, 1));
+    if (homed_) {
+      for (std::size_t r = 0; r < rows; ++r) {
+        const std::size_t at = std::size_t(home_) * r;
+        std::copy(cols.begin() + begin[r], cols.begin() + begin[r + 1], m_.innerIndexPtr() + at);
+        std::copy(vals.begin() + begin[r], vals.begin() + begin[r + 1], m_.valuePtr() + at);
+        m_.innerNonZeroPtr()[r] = static_cast<int>(begin[r + 1] - begin[r]);
+      }
+      return;
+    }
     const std::size_t nnz = cols.size();
     m_.data().resize(static_cast<Eigen::Index>(nnz));
     std::copy(cols.begin(), cols.end(), m_.innerIndexPtr());
@@ -288,6 +350,7 @@ private:
     // compact when they pass half of it: the buffer stays below 1.5× the live
     // slots, and each compaction is paid for by the insertions that grew rows.
     if (garbage_ > 1024 && 2 * garbage_ > tail_ - garbage_) compact();
+    homed_ = false;
     const int n = size(r);
     const std::size_t start = tail_;
     const std::size_t need = start + static_cast<std::size_t>(room);
@@ -329,13 +392,45 @@ private:
     m_.data().resize(static_cast<Eigen::Index>(tail_));
   }
 
-  // Eigen's copy assignment gives a compressed matrix laid out in row order.
-  void relayout_after_copy() {
+  // Eigen's copy assignment gives a compressed matrix laid out in row order;
+  // a copy of a homed store is homed again.
+  void relayout_after_copy(bool homed) {
     if (m_.isCompressed()) m_.uncompress();
     cap_.assign(static_cast<std::size_t>(m_.rows()), 0);
     for (Eigen::Index r = 0; r < m_.rows(); ++r) cap_[static_cast<std::size_t>(r)] = m_.innerNonZeroPtr()[r];
     tail_ = static_cast<std::size_t>(m_.data().size());
     garbage_ = 0;
+    homed_ = false;
+    if (!homed) return;
+    const std::size_t rows = cap_.size();
+    std::vector<std::uint32_t> begin(rows + 1, 0);
+    for (std::size_t r = 0; r < rows; ++r) begin[r + 1] = begin[r] + static_cast<std::uint32_t>(cap_[r]);
+    std::vector<int> cols(m_.innerIndexPtr(), m_.innerIndexPtr() + tail_);
+    std::vector<signed char> vals(m_.valuePtr(), m_.valuePtr() + tail_);
+    for (std::size_t r = 0; r < rows; ++r) // compressed rows may not start at begin[r]
+      for (std::uint32_t k = 0; k < begin[r + 1] - begin[r]; ++k) {
+        cols[begin[r] + k] = m_.innerIndexPtr()[m_.outerIndexPtr()[r] + static_cast<int>(k)];
+        vals[begin[r] + k] = m_.valuePtr()[m_.outerIndexPtr()[r] + static_cast<int>(k)];
+      }
+    const auto ncols = static_cast<std::size_t>(m_.cols());
+    assign(rows, ncols, begin, cols, vals);
+  }
+
+  // Gives rows [from, rows()) their home slots: the buffer covers K × rows(),
+  // each new row starts empty at K r with zero values.
+  void home_rows_(std::size_t from) {
+    const std::size_t rows = static_cast<std::size_t>(m_.rows()), k = static_cast<std::size_t>(home_);
+    const auto old = static_cast<std::size_t>(m_.data().size());
+    m_.data().resize(static_cast<Eigen::Index>(k * rows));
+    std::fill(m_.valuePtr() + std::min(old, k * from), m_.valuePtr() + k * rows, static_cast<signed char>(0));
+    std::fill(m_.innerIndexPtr() + std::min(old, k * from), m_.innerIndexPtr() + k * rows, 0);
+    for (std::size_t r = from; r < rows; ++r) {
+      m_.outerIndexPtr()[r] = static_cast<int>(k * r);
+      m_.innerNonZeroPtr()[r] = 0;
+      cap_[r] = home_;
+    }
+    tail_ = k * rows;
+    homed_ = true;
   }
 
   Matrix m_;
@@ -343,6 +438,9 @@ private:
   std::size_t tail_ = 0;    // first free entry of the buffer
   std::size_t garbage_ = 0; // entries in abandoned slots
   std::size_t compactions_ = 0;
+  int home_ = 0;       // home width K, 0 for none
+  int shift_ = 0;      // K = 1 << shift_
+  bool homed_ = false; // every row at K r (see home slots)
 };
 
 } // namespace detail
@@ -514,6 +612,13 @@ public:
   [[nodiscard]] Vertex_index target(Halfedge_index h) const {
     const std::uint32_t e = h.idx() >> 1;
     const signed char want = (h.idx() & 1u) ? -1 : 1;
+    if (d0_.homed()) { // row e at 2e; an end not set reads 0
+      const int* c = d0_.home_cols(e);
+      const signed char* s = d0_.home_vals(e);
+      if (s[0] == want) return Vertex_index(static_cast<std::uint32_t>(c[0]));
+      if (s[1] == want) return Vertex_index(static_cast<std::uint32_t>(c[1]));
+      return {};
+    }
     const int n = d0_.size(e);
     const int* c = d0_.cols(e);
     const signed char* s = d0_.vals(e);
@@ -529,6 +634,13 @@ public:
     const std::uint32_t e = h.idx() >> 1;
     if (!manifold_ && bad_edge_[e]) throw_edge_(e, "face");
     const signed char want = (h.idx() & 1u) ? -1 : 1;
+    if (d1t_.homed()) { // row e at 2e; a missing face reads 0
+      const int* c = d1t_.home_cols(e);
+      const signed char* s = d1t_.home_vals(e);
+      if (s[0] == want) return Face_index(static_cast<std::uint32_t>(c[0]));
+      if (s[1] == want) return Face_index(static_cast<std::uint32_t>(c[1]));
+      return {};
+    }
     const int n = d1t_.size(e);
     const int* c = d1t_.cols(e);
     const signed char* s = d1t_.vals(e);
@@ -539,16 +651,14 @@ public:
 
   /// The halfedge after h in its face (the one of face(h) leaving target(h)),
   /// or, on the border, the border halfedge leaving target(h). Inside a face:
-  /// the edge other than edge(h) in both f's d1 row and target(h)'s d0ᵀ row
-  /// (a merge of two short sorted rows), directed by its sign in f.
+  /// the entry of f's d1 row at the successor position turns_[h] records,
+  /// directed by its sign in f; on a face without a valid record, the edge
+  /// other than edge(h) in f's d1 row whose d0 row holds target(h).
   [[nodiscard]] Halfedge_index next(Halfedge_index h) const {
+    const std::uint8_t turn = turns_[h.idx()];
     const Face_index f = face(h);
     if (f.is_valid()) {
-      const std::uint64_t w = order_[f.idx()];
-      if (w != 0 && w != slow_order_) {
-        const int k = position_in_row_(f, h);
-        return side_at_position_(f, static_cast<int>((w >> (4 * k)) & 15u));
-      }
+      if (turn != no_turn_) return side_at_position_(f, turn & 15);
       return side_at_(f, target(h), h);
     }
     return border_leaving_(target(h), h);
@@ -557,15 +667,10 @@ public:
   /// The halfedge before h in its face, or on the border the border halfedge
   /// entering source(h).
   [[nodiscard]] Halfedge_index prev(Halfedge_index h) const {
+    const std::uint8_t turn = turns_[h.idx()];
     const Face_index f = face(h);
     if (f.is_valid()) {
-      const std::uint64_t w = order_[f.idx()];
-      if (w != 0 && w != slow_order_) {
-        const auto k = static_cast<std::uint64_t>(position_in_row_(f, h));
-        int j = 0;
-        while (((w >> (4 * j)) & 15u) != k) ++j;
-        return side_at_position_(f, j);
-      }
+      if (turn != no_turn_) return side_at_position_(f, turn >> 4);
       return side_at_(f, source(h), h);
     }
     return border_entering_(source(h), h);
@@ -751,7 +856,7 @@ public:
     const auto i = static_cast<std::uint32_t>(fremoved_.size());
     check_room_(i);
     fremoved_.push_back(false);
-    order_.push_back(0);
+    face_state_.push_back(order_dirty_);
     dirty_.push_back(i);
     d1_.reserve_shape(i + 1, 1);
     d1t_.reserve_shape(1, i + 1);
@@ -799,7 +904,7 @@ public:
       hook_border_(e);
     }
     d1_.clear_row(i);
-    order_[i] = slow_order_; // not in the dirty list's sense: touch_face_() on reuse
+    face_state_[i] = order_unknown_; // not in the dirty list's sense: touch_face_() on reuse
     fremoved_[i] = true;
     ++removed_faces_;
     garbage_ = true;
@@ -864,6 +969,7 @@ public:
     const signed char s = (h.idx() & 1u) ? -1 : 1;
     const int e = static_cast<int>(h.idx() >> 1);
     touch_face_(f.idx());
+    turns_[h.idx()] = no_turn_;
     d1_.set(f.idx(), e, s);
     d1t_.ensure_room(static_cast<std::uint32_t>(e), 2);
     unhook_border_(static_cast<std::uint32_t>(e));
@@ -886,7 +992,7 @@ public:
   /// correct but take the slow path until it is called. O(edited sides).
   void update_face_orders() {
     for (const std::uint32_t f : dirty_)
-      if (order_[f] == 0) order_[f] = face_order_(f);
+      if (face_state_[f] == order_dirty_) record_face_order_(f);
     dirty_.clear();
   }
 
@@ -898,6 +1004,13 @@ public:
   void set_recycle_garbage(bool b) { recycle_ = b; }
   [[nodiscard]] bool does_recycle_garbage() const { return recycle_; }
 
+  /// Drops removed elements and renumbers the survivors (see
+  /// Garbage_order: stable by default, or exactly as
+  /// CGAL::Surface_mesh::collect_garbage() does), rebuilding the matrices
+  /// compacted; returns the old -> new maps (identity if there was no
+  /// garbage). Defined in <genmesh/detail/incidence_garbage.h>.
+  Garbage_collection_maps collect_garbage(Garbage_order order = Garbage_order::stable);
+
   /// Capacity for nv vertices, ne edges and nf faces.
   void reserve(size_type nv, size_type ne, size_type nf) {
     points_.reserve(nv);
@@ -905,7 +1018,8 @@ public:
     vremoved_.reserve(nv);
     eremoved_.reserve(ne);
     fremoved_.reserve(nf);
-    order_.reserve(nf);
+    face_state_.reserve(nf);
+    turns_.reserve(2 * ne);
     d0_.reserve_shape(ne, nv);
     d0t_.reserve_shape(nv, ne);
     d1_.reserve_shape(nf, ne);
@@ -923,7 +1037,7 @@ public:
     return points_.capacity() * sizeof(P) + d0_.memory_bytes() + d0t_.memory_bytes() + d1_.memory_bytes() +
            d1t_.memory_bytes() + bits(vremoved_) + bits(eremoved_) + bits(fremoved_) +
            (vfree_.capacity() + efree_.capacity() + ffree_.capacity()) * sizeof(std::uint32_t) +
-           bits(bad_vertex_) + bits(bad_edge_) + order_.capacity() * sizeof(std::uint64_t) +
+           bits(bad_vertex_) + bits(bad_edge_) + face_state_.capacity() + turns_.capacity() +
            (dirty_.capacity() + border_edges_.capacity()) * sizeof(std::uint32_t);
   }
 
@@ -1014,8 +1128,9 @@ public:
     }
     m.border_edges_.assign(np, 0);
     for (std::uint32_t e = 0; e < ne; ++e) m.hook_border_(e);
-    m.order_.resize(nf);
-    for (std::size_t f = 0; f < nf; ++f) m.order_[f] = m.face_order_(static_cast<std::uint32_t>(f));
+    m.turns_.assign(2 * ne, no_turn_);
+    m.face_state_.assign(nf, order_dirty_);
+    for (std::size_t f = 0; f < nf; ++f) m.record_face_order_(static_cast<std::uint32_t>(f));
     *this = std::move(m);
   }
 
@@ -1046,11 +1161,14 @@ private:
       eremoved_[i] = false;
       d0_.clear_row(i);
       d1t_.clear_row(i);
+      turns_[2 * std::size_t(i)] = turns_[2 * std::size_t(i) + 1] = no_turn_;
       return Edge_index(i);
     }
     const auto i = static_cast<std::uint32_t>(eremoved_.size());
     check_room_(2 * std::size_t(i) + 1);
     eremoved_.push_back(false);
+    turns_.push_back(no_turn_);
+    turns_.push_back(no_turn_);
     d0_.reserve_shape(i + 1, 1);
     d0t_.reserve_shape(1, i + 1);
     d1_.reserve_shape(1, i + 1);
@@ -1072,19 +1190,48 @@ private:
   }
 
   // ---- face orders: next() in one lookup -------------------------------------
-  // order_[f] holds, for a face of 2..16 sides that is a closed directed
-  // cycle, the cyclic successor of each position of f's d1 row, 4 bits per
-  // position (it depends only on f's row and its edges' d0 rows, which is
-  // why the edits that change those mark f). 0: edited since the last
-  // update_face_orders() (f is in dirty_); slow_order_: too large, not a
-  // cycle, or removed — next() derives the successor from d0 as before.
-  static constexpr std::uint64_t slow_order_ = ~std::uint64_t(0);
+  // For a face f of 2..16 sides that is a closed directed cycle, each side h
+  // records in turns_[h] where its neighbours sit in f's d1 row: the low 4
+  // bits the position of next(h), the high 4 bits that of prev(h) (never
+  // both 15: no_turn_ is free to mean "no record"). A record depends only on
+  // f's row and its edges' d0 rows, so every edit that changes those touches
+  // f first, which clears the records of f's sides (add_side() clears the
+  // joining side's), and update_face_orders() records them again; until then
+  // next() derives the successor from d0 rows. face_state_[f]: order_dirty_
+  // (f is in dirty_), order_known_, order_unknown_ (too large, not a cycle,
+  // or removed: its sides keep no record). next() reads only turns_[h], on
+  // the halfedge's own line, never a per-face flag.
+  static constexpr std::uint8_t order_dirty_ = 0, order_known_ = 1, order_unknown_ = 2;
+  static constexpr std::uint8_t no_turn_ = 0xFF;
 
   void touch_face_(std::uint32_t f) {
-    if (order_[f] != 0) {
-      order_[f] = 0;
+    if (face_state_[f] != order_dirty_) {
+      face_state_[f] = order_dirty_;
       dirty_.push_back(f);
+      forget_turns_(f);
     }
+  }
+  void forget_turns_(std::uint32_t f) {
+    const int n = d1_.size(f);
+    for (int k = 0; k < n; ++k) turns_[side_at_position_(Face_index(f), k).idx()] = no_turn_;
+  }
+  // Computes f's order and records it in its sides' turns_ (or marks f
+  // order_unknown_).
+  void record_face_order_(std::uint32_t f) {
+    const std::uint64_t w = face_order_(f);
+    if (w == slow_order_) {
+      face_state_[f] = order_unknown_;
+      forget_turns_(f);
+      return;
+    }
+    const int n = d1_.size(f);
+    for (int k = 0; k < n; ++k) {
+      const auto next_k = static_cast<std::uint8_t>((w >> (4 * k)) & 15u);
+      const Halfedge_index hk = side_at_position_(Face_index(f), k), hn = side_at_position_(Face_index(f), next_k);
+      turns_[hk.idx()] = static_cast<std::uint8_t>((turns_[hk.idx()] & 0xF0u) | next_k);
+      turns_[hn.idx()] = static_cast<std::uint8_t>((turns_[hn.idx()] & 0x0Fu) | (k << 4));
+    }
+    face_state_[f] = order_known_;
   }
   void touch_edge_faces_(std::uint32_t e) {
     for (int k = 0; k < d1t_.size(e); ++k) touch_face_(static_cast<std::uint32_t>(d1t_.cols(e)[k]));
@@ -1092,20 +1239,14 @@ private:
   void touch_vertex_faces_(std::uint32_t v) {
     for (int k = 0; k < d0t_.size(v); ++k) touch_edge_faces_(static_cast<std::uint32_t>(d0t_.cols(v)[k]));
   }
-  // The position of edge(h) in f's d1 row (h is a side of f).
-  int position_in_row_(Face_index f, Halfedge_index h) const {
-    const int* c = d1_.cols(f.idx());
-    const int e = static_cast<int>(h.idx() >> 1);
-    int k = 0;
-    while (c[k] != e) ++k;
-    return k;
-  }
   // The side at position k of f's d1 row, directed by its sign.
   Halfedge_index side_at_position_(Face_index f, int k) const {
     return Halfedge_index(2u * static_cast<std::uint32_t>(d1_.cols(f.idx())[k]) +
                           static_cast<std::uint32_t>(d1_.vals(f.idx())[k] < 0));
   }
-  // The successor word of f (see order_), or slow_order_.
+  // The successor of each position of f's d1 row, 4 bits each (see turns_),
+  // or slow_order_.
+  static constexpr std::uint64_t slow_order_ = ~std::uint64_t(0);
   std::uint64_t face_order_(std::uint32_t f) const {
     const int n = d1_.size(f);
     if (n < 2 || n > 16) return slow_order_;
@@ -1244,10 +1385,10 @@ private:
   }
 
   std::vector<P> points_;
-  detail::Incidence_rows d0_;  // E × V
-  detail::Incidence_rows d0t_; // V × E
-  detail::Incidence_rows d1_;  // F × E
-  detail::Incidence_rows d1t_; // E × F
+  detail::Incidence_rows d0_{2};  // E × V, rows homed (two ends)
+  detail::Incidence_rows d0t_;    // V × E
+  detail::Incidence_rows d1_;     // F × E
+  detail::Incidence_rows d1t_{2}; // E × F, rows homed while manifold
   std::vector<bool> vremoved_, eremoved_, fremoved_;
   std::vector<std::uint32_t> vfree_, efree_, ffree_; // LIFO free lists
   std::size_t removed_vertices_ = 0, removed_edges_ = 0, removed_faces_ = 0;
@@ -1255,8 +1396,9 @@ private:
   bool recycle_ = true;
   bool manifold_ = true;
   std::vector<bool> bad_edge_, bad_vertex_; // empty while manifold_
-  std::vector<std::uint64_t> order_;  // per face, see face_order_()
-  std::vector<std::uint32_t> dirty_;  // faces with order_ 0
+  std::vector<std::uint8_t> face_state_; // per face, see record_face_order_()
+  std::vector<std::uint8_t> turns_;      // per halfedge, see record_face_order_()
+  std::vector<std::uint32_t> dirty_;     // faces with face_state_ order_dirty_
   std::vector<std::uint32_t> border_edges_; // per vertex, see hook_border_()
 };
 
@@ -1540,4 +1682,5 @@ static_assert(detail::Has_native_link_soup<Incidence_mesh<>> && detail::Soup_bui
 
 } // namespace genmesh
 
+#include <genmesh/detail/incidence_garbage.h>
 #include <genmesh/detail/incidence_operations.h>

@@ -1,0 +1,96 @@
+// genmesh/detail/incidence_garbage.h — Incidence_mesh::collect_garbage().
+// Included by <genmesh/incidence_mesh.h>; not for direct use.
+//
+// The survivors are renumbered by detail::compaction_map(), the function
+// Halfedge_mesh::collect_garbage() uses, so both meshes give the same maps;
+// the rows are then rebuilt compact through assign_incidences() (the bulk
+// path of load_soup and build_mesh), which also recomputes the derived
+// helpers (order words, border counts). O(V + E + F + non-zeros).
+#pragma once
+
+#include <genmesh/incidence_mesh.h>
+
+#include <ranges>
+
+namespace genmesh {
+
+template <class P>
+Garbage_collection_maps Incidence_mesh<P>::collect_garbage(Garbage_order order) {
+  constexpr std::uint32_t null = Vertex_index::invalid_value;
+  const std::vector<std::uint32_t> vmap = detail::compaction_map(vremoved_, order);
+  const std::vector<std::uint32_t> emap = detail::compaction_map(eremoved_, order);
+  const std::vector<std::uint32_t> fmap = detail::compaction_map(fremoved_, order);
+
+  if (garbage_) {
+    // New -> old, to gather the survivors in their new order.
+    auto inverse = [](const std::vector<std::uint32_t>& map, std::size_t kept) {
+      std::vector<std::uint32_t> old(kept);
+      for (std::size_t i = 0; i < map.size(); ++i)
+        if (map[i] != null) old[map[i]] = static_cast<std::uint32_t>(i);
+      return old;
+    };
+    const std::vector<std::uint32_t> vold = inverse(vmap, n_vertices());
+    const std::vector<std::uint32_t> eold = inverse(emap, n_edges());
+    const std::vector<std::uint32_t> fold = inverse(fmap, n_faces());
+
+    // assign_incidences() takes each edge as (source, target): refuse, before
+    // changing anything, a live edge whose ends were never set.
+    std::vector<std::uint32_t> ends(2 * eold.size());
+    for (std::size_t j = 0; j < eold.size(); ++j) {
+      const Vertex_index s = source(halfedge(Edge_index(eold[j]))), t = target(halfedge(Edge_index(eold[j])));
+      if (!s.is_valid() || !t.is_valid())
+        throw invalid_input("Incidence_mesh::collect_garbage: edge " + std::to_string(eold[j]) +
+                            " has no two ends (set them with set_edge_vertices first)");
+      ends[2 * j] = vmap[s.idx()];
+      ends[2 * j + 1] = vmap[t.idx()];
+    }
+    std::vector<std::uint32_t> offsets(fold.size() + 1, 0);
+    std::vector<std::uint32_t> corner_edge;
+    std::vector<signed char> corner_sign;
+    corner_edge.reserve(static_cast<std::size_t>(d1_.matrix().nonZeros()));
+    corner_sign.reserve(corner_edge.capacity());
+    for (std::size_t j = 0; j < fold.size(); ++j) {
+      const std::uint32_t f = fold[j];
+      for (int k = 0; k < d1_.size(f); ++k) {
+        corner_edge.push_back(emap[static_cast<std::size_t>(d1_.cols(f)[k])]);
+        corner_sign.push_back(d1_.vals(f)[k]);
+      }
+      offsets[j + 1] = static_cast<std::uint32_t>(corner_edge.size());
+    }
+    std::vector<P> pts;
+    pts.reserve(vold.size());
+    for (const std::uint32_t v : vold) pts.push_back(points_[v]);
+
+    // The bulk path takes Eigen points; the exact points are put back below.
+    const bool recycle = recycle_;
+    assign_incidences(std::views::transform(std::views::iota(std::size_t(0), vold.size()),
+                                            [](std::size_t) { return Eigen::Vector3d::Zero().eval(); }),
+                      ends, offsets, corner_edge, corner_sign);
+    points_.swap(pts);
+    recycle_ = recycle;
+    update_manifold_flags_();
+  }
+
+  Garbage_collection_maps maps;
+  maps.vertices.reserve(vmap.size());
+  for (const auto i : vmap) maps.vertices.emplace_back(i);
+  maps.halfedges.reserve(2 * emap.size());
+  for (const auto i : emap) {
+    maps.halfedges.emplace_back(i == null ? null : 2 * i);
+    maps.halfedges.emplace_back(i == null ? null : 2 * i + 1);
+  }
+  maps.edges.reserve(emap.size());
+  for (const auto i : emap) maps.edges.emplace_back(i);
+  maps.faces.reserve(fmap.size());
+  for (const auto i : fmap) maps.faces.emplace_back(i);
+  return maps;
+}
+
+/// Drops removed elements and renumbers the survivors; see
+/// Incidence_mesh::collect_garbage().
+template <class P>
+Garbage_collection_maps collect_garbage(Incidence_mesh<P>& m, Garbage_order order = Garbage_order::stable) {
+  return m.collect_garbage(order);
+}
+
+} // namespace genmesh
