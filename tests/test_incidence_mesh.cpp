@@ -534,9 +534,11 @@ TEST(IncidenceMesh, EdgeRowsStayHomedWhileManifold) {
   genmesh::build_mesh(genmesh::make_icosphere(2), m);
   EXPECT_TRUE(m.d0_rows().homed());
   EXPECT_TRUE(m.d1t_rows().homed());
+  EXPECT_TRUE(m.d1_rows().homed()); // faces of at most four sides
   random_local_operations(m, 23, 3000, true);
   EXPECT_TRUE(m.d0_rows().homed());
   EXPECT_TRUE(m.d1t_rows().homed());
+  EXPECT_TRUE(m.d1_rows().homed());
   Hm b;
   genmesh::build_mesh(genmesh::to_soup(m), b);
   Inc again;
@@ -544,6 +546,19 @@ TEST(IncidenceMesh, EdgeRowsStayHomedWhileManifold) {
   expect_same_traversal(again, b);
   const Inc copy = m; // copies stay homed
   EXPECT_TRUE(copy.d0_rows().homed() && copy.d1t_rows().homed());
+
+  // A pentagon needs five entries in its d1 row: that store is general, the
+  // mesh the same.
+  genmesh::Polygon_soup pent;
+  for (int i = 0; i < 5; ++i) pent.add_point(std::cos(1.2566 * i), std::sin(1.2566 * i), 0);
+  pent.add_face({0, 1, 2, 3, 4});
+  Inc p;
+  genmesh::build_mesh(pent, p);
+  EXPECT_FALSE(p.d1_rows().homed());
+  EXPECT_TRUE(p.d0_rows().homed() && p.d1t_rows().homed());
+  Hm pb;
+  genmesh::build_mesh(pent, pb);
+  expect_same_traversal(p, pb);
 
   const Inc fin = Inc::from_soup(fin_soup());
   EXPECT_TRUE(fin.d0_rows().homed());

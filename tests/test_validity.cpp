@@ -221,14 +221,22 @@ TYPED_TEST(Validity, GeneratedMeshesRoundTripAndHaveTheRightTopology) {
 }
 
 TYPED_TEST(Validity, BuildConventionsHold) {
-  // halfedge(f) targets the face's first corner; a border vertex's halfedge is border.
+  // halfedge(f) targets the face's first corner (the incidence mesh stores
+  // no halfedge: its halfedge(f) is the side along f's lowest-numbered edge);
+  // a border vertex's halfedge is border.
   Polygon_soup s = genmesh::make_grid(3, 3);
   TypeParam g;
   genmesh::build_mesh(s, g);
   std::vector<genmesh::vertex_descriptor_t<TypeParam>> vs(vertices(g).begin(), vertices(g).end());
   std::size_t f = 0;
   for (auto fd : faces(g)) {
-    EXPECT_EQ(target(halfedge(fd, g), g), vs[s.face(f)[0]]);
+    if constexpr (std::is_same_v<TypeParam, genmesh_test::Incidence_mesh>) {
+      const auto h = halfedge(fd, g);
+      EXPECT_EQ(face(h, g), fd);
+      for (auto x : CGAL::halfedges_around_face(h, g)) EXPECT_LE(edge(h, g).idx(), edge(x, g).idx());
+    } else {
+      EXPECT_EQ(target(halfedge(fd, g), g), vs[s.face(f)[0]]);
+    }
     ++f;
   }
   std::size_t border_vertices = 0;

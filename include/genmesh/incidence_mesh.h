@@ -11,9 +11,9 @@
 // target as in d0); opposite(h) = h ^ 1 and edge(h) = h / 2 are arithmetic,
 // and next, prev, face, target, halfedge(v), halfedge(f) are derived from the
 // matrices on each call, in O(local degree). The E-row matrices d0 and d1ᵀ
-// keep row e at entries [2e, 2e + 2) (home slots, see detail::Incidence_rows)
-// while every row fits, so target() and face() read one short row without
-// the outer index. Two derived helpers make the derivation cheap and are
+// keep row e at entries [2e, 2e + 2), and d1 row f at [4f, 4f + 4) (home
+// slots, see detail::Incidence_rows) while every row fits, so target(),
+// face() and next() read short rows without the outer index. Two derived helpers make the derivation cheap and are
 // kept up to date by every edit: per halfedge a turn record (where next(h)
 // and prev(h) sit in its face's d1 row, 4 bits each), so next() reads no d0
 // row and does not search the face's row; per vertex the number of its edges
@@ -46,8 +46,8 @@
 // Limits:
 // - halfedge(v) and halfedge(f) are canonical, not remembered: halfedge(v)
 //   is v's incoming border halfedge if it has one, else the incoming halfedge
-//   of its lowest-numbered edge; halfedge(f) targets f's lowest-numbered
-//   vertex. Halfedge_mesh remembers whatever its last edit set, so generic
+//   of its lowest-numbered edge; halfedge(f) is f's side along its
+//   lowest-numbered edge. Halfedge_mesh remembers whatever its last edit set, so generic
 //   code that starts at halfedge(v) or halfedge(f) (bevel_vertex,
 //   bevel_face, erase_vertex) numbers its new elements from another start.
 // - Not a MutableHalfedgeGraph (no set_next): generic code that edits
@@ -113,9 +113,11 @@ namespace detail {
 /// long as no row needs more than K entries, with the values past a row's
 /// end zero. While homed() holds, a reader finds row r at K r without
 /// reading the outer index or the non-zero count (home_cols(), home_vals()),
-/// which saves two dependent loads per derived next(), face() or target().
-/// The first row to outgrow K turns the store into the general layout above
-/// for good (fins of a non-manifold load do so for d1ᵀ).
+/// which saves two dependent loads per derived next(), face() or target();
+/// cols() and vals() skip the outer index too. The first row to outgrow K
+/// turns the store into the general layout above (fins of a non-manifold
+/// load do so for d1ᵀ, a pentagon for d1); a copy or assign() homes the rows
+/// again when they fit.
 class Incidence_rows {
 public:
   using Matrix = Eigen::SparseMatrix<signed char, Eigen::RowMajor, int>;
@@ -128,7 +130,7 @@ public:
     reset();
   }
   Incidence_rows(const Incidence_rows& o) : m_(o.m_), home_(o.home_), shift_(o.shift_) {
-    relayout_after_copy(o.homed_);
+    relayout_after_copy();
   }
   // Eigen 3.4's SparseMatrix has no move constructor (a "move" would copy
   // into compressed form): swap instead.
@@ -143,7 +145,7 @@ public:
       m_ = o.m_;
       home_ = o.home_;
       shift_ = o.shift_;
-      relayout_after_copy(o.homed_);
+      relayout_after_copy();
     }
     return *this;
   }
@@ -209,8 +211,9 @@ public:
   }
 
   [[nodiscard]] int size(std::uint32_t r) const { return m_.innerNonZeroPtr()[r]; }
-  [[nodiscard]] const int* cols(std::uint32_t r) const { return m_.innerIndexPtr() + m_.outerIndexPtr()[r]; }
-  [[nodiscard]] const signed char* vals(std::uint32_t r) const { return m_.valuePtr() + m_.outerIndexPtr()[r]; }
+  /// Row r's first column and value (homed: at K r, no outer index read).
+  [[nodiscard]] const int* cols(std::uint32_t r) const { return m_.innerIndexPtr() + start_(r); }
+  [[nodiscard]] const signed char* vals(std::uint32_t r) const { return m_.valuePtr() + start_(r); }
   [[nodiscard]] std::span<const int> row_cols(std::uint32_t r) const {
     return {cols(r), static_cast<std::size_t>(size(r))};
   }
@@ -344,6 +347,10 @@ public:
   }
 
 private:
+  [[nodiscard]] std::size_t start_(std::uint32_t r) const {
+    return homed_ ? std::size_t(r) << shift_ : static_cast<std::size_t>(m_.outerIndexPtr()[r]);
+  }
+
   // Moves row r to a new slot of `room` entries at the end of the buffer.
   void relocate(std::uint32_t r, int room) {
     // Abandoned slots are at most the live slots' size (each row doubles), so
@@ -393,15 +400,15 @@ private:
   }
 
   // Eigen's copy assignment gives a compressed matrix laid out in row order;
-  // a copy of a homed store is homed again.
-  void relayout_after_copy(bool homed) {
+  // a copy is homed again when its rows fit (assign() decides).
+  void relayout_after_copy() {
     if (m_.isCompressed()) m_.uncompress();
     cap_.assign(static_cast<std::size_t>(m_.rows()), 0);
     for (Eigen::Index r = 0; r < m_.rows(); ++r) cap_[static_cast<std::size_t>(r)] = m_.innerNonZeroPtr()[r];
     tail_ = static_cast<std::size_t>(m_.data().size());
     garbage_ = 0;
     homed_ = false;
-    if (!homed) return;
+    if (home_ == 0) return;
     const std::size_t rows = cap_.size();
     std::vector<std::uint32_t> begin(rows + 1, 0);
     for (std::size_t r = 0; r < rows; ++r) begin[r + 1] = begin[r] + static_cast<std::uint32_t>(cap_[r]);
@@ -694,9 +701,16 @@ public:
     }
     return Halfedge_index(2u * static_cast<std::uint32_t>(c[0]) + (s[0] > 0 ? 0u : 1u));
   }
-  /// The halfedge of f targeting f's lowest-numbered vertex (null for a face
-  /// with no side).
+  /// The side of f along its lowest-numbered edge (the first entry of its d1
+  /// row), null for a face with no side: O(1).
   [[nodiscard]] Halfedge_index halfedge(Face_index f) const {
+    if (d1_.size(f.idx()) == 0) return {};
+    return side_at_position_(f, 0);
+  }
+  /// The side of f targeting f's lowest-numbered vertex (null for a face
+  /// with no side): where triangulate_face() fans from, as the generic
+  /// operation does. O(degree).
+  [[nodiscard]] Halfedge_index lowest_corner(Face_index f) const {
     const int n = d1_.size(f.idx());
     const int* c = d1_.cols(f.idx());
     const signed char* s = d1_.vals(f.idx());
@@ -770,7 +784,7 @@ public:
     auto to = [&](int k) {
       return target(Halfedge_index(2u * static_cast<std::uint32_t>(c[k]) + (s[k] > 0 ? 0u : 1u)));
     };
-    // Start at the side leaving the lowest vertex, as halfedge(f) does.
+    // Start at the side leaving the lowest vertex, as lowest_corner() does.
     int k = 0;
     for (int j = 1; j < n; ++j)
       if (to(j) < to(k)) k = j;
@@ -1387,7 +1401,7 @@ private:
   std::vector<P> points_;
   detail::Incidence_rows d0_{2};  // E × V, rows homed (two ends)
   detail::Incidence_rows d0t_;    // V × E
-  detail::Incidence_rows d1_;     // F × E
+  detail::Incidence_rows d1_{4};  // F × E, rows homed while faces have at most 4 sides
   detail::Incidence_rows d1t_{2}; // E × F, rows homed while manifold
   std::vector<bool> vremoved_, eremoved_, fremoved_;
   std::vector<std::uint32_t> vfree_, efree_, ffree_; // LIFO free lists

@@ -11,7 +11,9 @@
 // - edges are created in the order their first directed use appears (face by
 //   face, corner by corner); the halfedge created first for an edge is the one
 //   of that first use;
-// - halfedge(f, g) is the halfedge whose target is f's first corner;
+// - halfedge(f, g) is the halfedge whose target is f's first corner (on
+//   backends that store it; Incidence_mesh derives a canonical one: the side
+//   along f's lowest-numbered edge);
 // - halfedge(v, g) is the incoming border halfedge for a border vertex (CGAL's
 //   convention) and the first incoming halfedge in corner order otherwise.
 // Works on every MutableFaceGraph with vertex points; tested on

@@ -132,9 +132,11 @@ Halfedge_index join_face_raw(Halfedge_index h, M<P>& g) {
   const Face_index f = g.face(h), f2 = g.face(hop);
   Hs other = cycle(hop, g);
   if (f2.is_valid()) g.remove_face(f2);
+  // The edge leaves f's row before the other sides join it: two triangles
+  // never need five entries (which would turn d1's home slots general).
+  g.remove_edge(M<P>::edge(h));
   if (f.is_valid())
     for (std::size_t i = 1; i < other.size(); ++i) g.add_side(f, other[i]);
-  g.remove_edge(M<P>::edge(h));
   return hprev;
 }
 
@@ -595,7 +597,7 @@ bool genmesh_native_remove_face(Halfedge_index h, Incidence_mesh<P>& g, Visitor&
 template <class P>
 bool genmesh_native_can_triangulate_face(Face_index f, const Incidence_mesh<P>& g) {
   if (!g.is_manifold() || !f.is_valid()) return false;
-  const Halfedge_index h0 = g.halfedge(f); // targets the lowest vertex, as lo::lowest_corner
+  const Halfedge_index h0 = g.lowest_corner(f); // as the generic lo::lowest_corner
   const Vertex_index v0 = g.target(h0);
   for (Halfedge_index x = g.next(g.next(h0)); g.next(x) != h0; x = g.next(x))
     if (g.halfedge(v0, g.target(x)).is_valid()) return false;
@@ -606,7 +608,7 @@ template <class P, class Visitor = Mutation_visitor>
 bool genmesh_native_triangulate_face(Face_index f, Incidence_mesh<P>& g, Visitor&& visitor = {}) {
   const detail::inc::Face_order_update<P> orders{g};
   if (!genmesh_native_can_triangulate_face(f, std::as_const(g))) return false;
-  const Halfedge_index h0 = g.halfedge(f);
+  const Halfedge_index h0 = g.lowest_corner(f);
   while (g.degree(g.face(h0)) > 3) {
     const Halfedge_index h3 = detail::inc::split_face_raw(h0, g.next(g.next(h0)), g);
     visitor.on_split_face(h3, std::as_const(g));
