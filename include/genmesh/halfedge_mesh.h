@@ -1318,42 +1318,8 @@ struct Index_map : boost::put_get_helper<std::size_t, Index_map<Key>> {
   std::size_t operator[](Key k) const { return k.idx(); }
 };
 
-template <class P>
-Vertex_property<P> get(vertex_point_t, const Halfedge_mesh<P>& m) {
-  return m.points();
-}
-template <class P>
-Index_map<Vertex_index> get(vertex_index_t, const Halfedge_mesh<P>&) {
-  return {};
-}
-template <class P>
-Index_map<Halfedge_index> get(halfedge_index_t, const Halfedge_mesh<P>&) {
-  return {};
-}
-template <class P>
-Index_map<Edge_index> get(edge_index_t, const Halfedge_mesh<P>&) {
-  return {};
-}
-template <class P>
-Index_map<Face_index> get(face_index_t, const Halfedge_mesh<P>&) {
-  return {};
-}
-template <class P>
-std::size_t index_bound(vertex_index_t, const Halfedge_mesh<P>& m) {
-  return m.vertices_size();
-}
-template <class P>
-std::size_t index_bound(halfedge_index_t, const Halfedge_mesh<P>& m) {
-  return m.halfedges_size();
-}
-template <class P>
-std::size_t index_bound(edge_index_t, const Halfedge_mesh<P>& m) {
-  return m.edges_size();
-}
-template <class P>
-std::size_t index_bound(face_index_t, const Halfedge_mesh<P>& m) {
-  return m.faces_size();
-}
+// get(vertex_point_t / *_index_t, m) and index_bound(tag, m): see
+// <genmesh/detail/mesh_functions.h>.
 
 // ---------------------------------------------------------------------------
 // Scoped (RAII) properties
@@ -1460,97 +1426,17 @@ struct graph_traits<const genmesh::Halfedge_mesh<P>> : graph_traits<genmesh::Hal
 // CGAL BGL free functions (found by ADL through Halfedge_mesh)
 // ---------------------------------------------------------------------------
 
+#include <genmesh/detail/mesh_functions.h>
+
 namespace genmesh {
 
-// VertexListGraph, EdgeListGraph, HalfedgeListGraph, FaceListGraph
-template <class P>
-std::size_t num_vertices(const Halfedge_mesh<P>& m) {
-  return m.n_vertices();
-}
-template <class P>
-std::size_t num_halfedges(const Halfedge_mesh<P>& m) {
-  return m.n_halfedges();
-}
-template <class P>
-std::size_t num_edges(const Halfedge_mesh<P>& m) {
-  return m.n_edges();
-}
-template <class P>
-std::size_t num_faces(const Halfedge_mesh<P>& m) {
-  return m.n_faces();
-}
-template <class P>
-Range<Vertex_iterator> vertices(const Halfedge_mesh<P>& m) {
-  return m.vertices();
-}
-template <class P>
-Range<Halfedge_iterator> halfedges(const Halfedge_mesh<P>& m) {
-  return m.halfedges();
-}
-template <class P>
-Range<Edge_iterator> edges(const Halfedge_mesh<P>& m) {
-  return m.edges();
-}
-template <class P>
-Range<Face_iterator> faces(const Halfedge_mesh<P>& m) {
-  return m.faces();
-}
+namespace detail {
+template <>
+inline constexpr bool is_genmesh_mesh<Halfedge_mesh> = true;
+} // namespace detail
 
-// HalfedgeGraph
-template <class P>
-Vertex_index source(Halfedge_index h, const Halfedge_mesh<P>& m) {
-  return m.source(h);
-}
-template <class P>
-Vertex_index target(Halfedge_index h, const Halfedge_mesh<P>& m) {
-  return m.target(h);
-}
-/// source(halfedge(e, g), g).
-template <class P>
-Vertex_index source(Edge_index e, const Halfedge_mesh<P>& m) {
-  return m.source(m.halfedge(e));
-}
-/// target(halfedge(e, g), g).
-template <class P>
-Vertex_index target(Edge_index e, const Halfedge_mesh<P>& m) {
-  return m.target(m.halfedge(e));
-}
-template <class P>
-Halfedge_index next(Halfedge_index h, const Halfedge_mesh<P>& m) {
-  return m.next(h);
-}
-template <class P>
-Halfedge_index prev(Halfedge_index h, const Halfedge_mesh<P>& m) {
-  return m.prev(h);
-}
-template <class P>
-Halfedge_index opposite(Halfedge_index h, const Halfedge_mesh<P>&) {
-  return Halfedge_connectivity::opposite(h);
-}
-template <class P>
-Edge_index edge(Halfedge_index h, const Halfedge_mesh<P>&) {
-  return Halfedge_connectivity::edge(h);
-}
-template <class P>
-Halfedge_index halfedge(Edge_index e, const Halfedge_mesh<P>&) {
-  return Halfedge_connectivity::halfedge(e);
-}
-template <class P>
-Halfedge_index halfedge(Vertex_index v, const Halfedge_mesh<P>& m) {
-  return m.halfedge(v);
-}
-/// The halfedge u -> v and whether it exists.
-template <class P>
-std::pair<Halfedge_index, bool> halfedge(Vertex_index u, Vertex_index v, const Halfedge_mesh<P>& m) {
-  const Halfedge_index h = m.halfedge(u, v);
-  return {h, h.is_valid()};
-}
-/// The edge between u and v, oriented u -> v, and whether it exists.
-template <class P>
-std::pair<Edge_index, bool> edge(Vertex_index u, Vertex_index v, const Halfedge_mesh<P>& m) {
-  const Halfedge_index h = m.halfedge(u, v);
-  return {Edge_index(h), h.is_valid()};
-}
+// What only Halfedge_mesh has; the rest: <genmesh/detail/mesh_functions.h>.
+
 /// Edges leaving v, oriented so that source(e, m) == v (CGAL's order).
 template <class P>
 Range<Out_edge_iterator> out_edges(Vertex_index v, const Halfedge_mesh<P>& m) {
@@ -1567,30 +1453,12 @@ Range<Vertex_around_target_iterator> adjacent_vertices(Vertex_index v, const Hal
   return m.vertices_around_target(v);
 }
 template <class P>
-std::size_t degree(Vertex_index v, const Halfedge_mesh<P>& m) {
-  return m.degree(v);
-}
-template <class P>
 std::size_t out_degree(Vertex_index v, const Halfedge_mesh<P>& m) {
   return m.degree(v);
 }
 template <class P>
 std::size_t in_degree(Vertex_index v, const Halfedge_mesh<P>& m) {
   return m.degree(v);
-}
-
-// FaceGraph
-template <class P>
-Face_index face(Halfedge_index h, const Halfedge_mesh<P>& m) {
-  return m.face(h);
-}
-template <class P>
-Halfedge_index halfedge(Face_index f, const Halfedge_mesh<P>& m) {
-  return m.halfedge(f);
-}
-template <class P>
-std::size_t degree(Face_index f, const Halfedge_mesh<P>& m) {
-  return m.degree(f);
 }
 
 // MutableHalfedgeGraph
@@ -1606,37 +1474,13 @@ template <class P>
 void set_halfedge(Vertex_index v, Halfedge_index h, Halfedge_mesh<P>& m) {
   m.set_halfedge(v, h);
 }
-template <class P>
-Vertex_index add_vertex(Halfedge_mesh<P>& m) {
-  return m.add_vertex();
-}
-template <class P>
-Vertex_index add_vertex(const typename Halfedge_mesh<P>::Point& p, Halfedge_mesh<P>& m) {
-  return m.add_vertex(p);
-}
 /// A new edge; returns it as an edge (its halfedges are halfedge(e, 0/1)).
 template <class P>
 Edge_index add_edge(Halfedge_mesh<P>& m) {
   return m.edge(m.add_edge());
 }
-template <class P>
-void remove_vertex(Vertex_index v, Halfedge_mesh<P>& m) {
-  m.remove_vertex(v);
-}
-template <class P>
-void remove_edge(Edge_index e, Halfedge_mesh<P>& m) {
-  m.remove_edge(e);
-}
 
 // MutableFaceGraph
-template <class P>
-Face_index add_face(Halfedge_mesh<P>& m) {
-  return m.add_face();
-}
-template <class P>
-void remove_face(Face_index f, Halfedge_mesh<P>& m) {
-  m.remove_face(f);
-}
 template <class P>
 void set_face(Halfedge_index h, Face_index f, Halfedge_mesh<P>& m) {
   m.set_face(h, f);
@@ -1644,14 +1488,6 @@ void set_face(Halfedge_index h, Face_index f, Halfedge_mesh<P>& m) {
 template <class P>
 void set_halfedge(Face_index f, Halfedge_index h, Halfedge_mesh<P>& m) {
   m.set_halfedge(f, h);
-}
-template <class P>
-void reserve(Halfedge_mesh<P>& m, std::size_t nv, std::size_t ne, std::size_t nf) {
-  m.reserve(nv, ne, nf);
-}
-template <class P>
-Garbage_collection_maps collect_garbage(Halfedge_mesh<P>& m, Garbage_order order = Garbage_order::stable) {
-  return m.collect_garbage(order);
 }
 
 // The claims of this header, checked where it is compiled.

@@ -1417,46 +1417,10 @@ private:
   std::vector<std::uint32_t> border_edges_; // per vertex, see hook_border_()
 };
 
-// ---------------------------------------------------------------------------
-// Property maps
-// ---------------------------------------------------------------------------
-
-template <class P>
-Incidence_point_map<P> get(vertex_point_t, const Incidence_mesh<P>& m) {
-  return m.points();
-}
-template <class P>
-Index_map<Vertex_index> get(vertex_index_t, const Incidence_mesh<P>&) {
-  return {};
-}
-template <class P>
-Index_map<Halfedge_index> get(halfedge_index_t, const Incidence_mesh<P>&) {
-  return {};
-}
-template <class P>
-Index_map<Edge_index> get(edge_index_t, const Incidence_mesh<P>&) {
-  return {};
-}
-template <class P>
-Index_map<Face_index> get(face_index_t, const Incidence_mesh<P>&) {
-  return {};
-}
-template <class P>
-std::size_t index_bound(vertex_index_t, const Incidence_mesh<P>& m) {
-  return m.vertices_size();
-}
-template <class P>
-std::size_t index_bound(halfedge_index_t, const Incidence_mesh<P>& m) {
-  return m.halfedges_size();
-}
-template <class P>
-std::size_t index_bound(edge_index_t, const Incidence_mesh<P>& m) {
-  return m.edges_size();
-}
-template <class P>
-std::size_t index_bound(face_index_t, const Incidence_mesh<P>& m) {
-  return m.faces_size();
-}
+namespace detail {
+template <>
+inline constexpr bool is_genmesh_mesh<Incidence_mesh> = true; // the shared BGL functions, property maps included
+} // namespace detail
 
 } // namespace genmesh
 
@@ -1510,140 +1474,12 @@ struct graph_traits<const genmesh::Incidence_mesh<P>> : graph_traits<genmesh::In
 
 namespace genmesh {
 
-template <class P>
-std::size_t num_vertices(const Incidence_mesh<P>& m) {
-  return m.n_vertices();
-}
-template <class P>
-std::size_t num_halfedges(const Incidence_mesh<P>& m) {
-  return m.n_halfedges();
-}
-template <class P>
-std::size_t num_edges(const Incidence_mesh<P>& m) {
-  return m.n_edges();
-}
-template <class P>
-std::size_t num_faces(const Incidence_mesh<P>& m) {
-  return m.n_faces();
-}
-template <class P>
-Range<Vertex_iterator> vertices(const Incidence_mesh<P>& m) {
-  return m.vertices();
-}
-template <class P>
-Range<Halfedge_iterator> halfedges(const Incidence_mesh<P>& m) {
-  return m.halfedges();
-}
-template <class P>
-Range<Edge_iterator> edges(const Incidence_mesh<P>& m) {
-  return m.edges();
-}
-template <class P>
-Range<Face_iterator> faces(const Incidence_mesh<P>& m) {
-  return m.faces();
-}
+// What only Incidence_mesh has; the rest: <genmesh/detail/mesh_functions.h>.
 
-template <class P>
-Vertex_index source(Halfedge_index h, const Incidence_mesh<P>& m) {
-  return m.source(h);
-}
-template <class P>
-Vertex_index target(Halfedge_index h, const Incidence_mesh<P>& m) {
-  return m.target(h);
-}
-template <class P>
-Vertex_index source(Edge_index e, const Incidence_mesh<P>& m) {
-  return m.source(m.halfedge(e));
-}
-template <class P>
-Vertex_index target(Edge_index e, const Incidence_mesh<P>& m) {
-  return m.target(m.halfedge(e));
-}
-template <class P>
-Halfedge_index next(Halfedge_index h, const Incidence_mesh<P>& m) {
-  return m.next(h);
-}
-template <class P>
-Halfedge_index prev(Halfedge_index h, const Incidence_mesh<P>& m) {
-  return m.prev(h);
-}
-template <class P>
-Halfedge_index opposite(Halfedge_index h, const Incidence_mesh<P>&) {
-  return Incidence_mesh<P>::opposite(h);
-}
-template <class P>
-Edge_index edge(Halfedge_index h, const Incidence_mesh<P>&) {
-  return Incidence_mesh<P>::edge(h);
-}
-template <class P>
-Halfedge_index halfedge(Edge_index e, const Incidence_mesh<P>&) {
-  return Incidence_mesh<P>::halfedge(e);
-}
-template <class P>
-Halfedge_index halfedge(Vertex_index v, const Incidence_mesh<P>& m) {
-  return m.halfedge(v);
-}
-template <class P>
-std::pair<Halfedge_index, bool> halfedge(Vertex_index u, Vertex_index v, const Incidence_mesh<P>& m) {
-  const Halfedge_index h = m.halfedge(u, v);
-  return {h, h.is_valid()};
-}
-template <class P>
-std::pair<Edge_index, bool> edge(Vertex_index u, Vertex_index v, const Incidence_mesh<P>& m) {
-  const Halfedge_index h = m.halfedge(u, v);
-  return {Edge_index(h), h.is_valid()};
-}
-template <class P>
-std::size_t degree(Vertex_index v, const Incidence_mesh<P>& m) {
-  return m.degree(v);
-}
-template <class P>
-Face_index face(Halfedge_index h, const Incidence_mesh<P>& m) {
-  return m.face(h);
-}
-template <class P>
-Halfedge_index halfedge(Face_index f, const Incidence_mesh<P>& m) {
-  return m.halfedge(f);
-}
-template <class P>
-std::size_t degree(Face_index f, const Incidence_mesh<P>& m) {
-  return m.degree(f);
-}
-
-template <class P>
-Vertex_index add_vertex(Incidence_mesh<P>& m) {
-  return m.add_vertex();
-}
-template <class P>
-Vertex_index add_vertex(const typename Incidence_mesh<P>::Point& p, Incidence_mesh<P>& m) {
-  return m.add_vertex(p);
-}
 /// A new edge with no ends yet (set them with g.set_edge_vertices(e, u, v)).
 template <class P>
 Edge_index add_edge(Incidence_mesh<P>& m) {
   return m.add_edge();
-}
-/// A new face with no side yet (give it sides with g.add_side(f, h)).
-template <class P>
-Face_index add_face(Incidence_mesh<P>& m) {
-  return m.add_face();
-}
-/// Removes v with its incidences (no edge is removed: use it on isolated vertices).
-template <class P>
-void remove_vertex(Vertex_index v, Incidence_mesh<P>& m) {
-  m.remove_vertex(v);
-}
-template <class P>
-void remove_edge(Edge_index e, Incidence_mesh<P>& m) {
-  m.remove_edge(e);
-}
-template <class P>
-void remove_face(Face_index f, Incidence_mesh<P>& m) {
-  m.remove_face(f);
-}
-template <class P>
-void reserve(Incidence_mesh<P>& m, std::size_t nv, std::size_t ne, std::size_t nf) {
-  m.reserve(nv, ne, nf);
 }
 
 /// Replaces g by soup (see Incidence_mesh::load_soup): non-manifold soups load.

@@ -1,0 +1,260 @@
+// genmesh/detail/mesh_functions.h — the CGAL BGL free functions of genmesh's
+// own meshes, written once.
+//
+// What it is: num_vertices, vertices, source, target, next, prev, opposite,
+// edge, halfedge, face, degree, add_/remove_ elements, the index and point
+// property maps, index_bound, reserve and collect_garbage for every mesh class
+// template M that opts in with detail::is_genmesh_mesh<M> = true
+// (Halfedge_mesh, Incidence_mesh). Each forwards to M<P>'s member of the same
+// name; what only one mesh has (set_next, out_edges, add_edge's return value,
+// load_soup, ...) stays beside that mesh.
+//
+// Guarantees: every function takes `M<P>&`, not a bare template parameter, so
+// it is more specialized than CGAL's generic helpers that take any graph
+// (CGAL::degree(face, g) and the like), exactly as the per-class overloads it
+// replaces were; found by ADL through genmesh's index types and the mesh.
+// Included by <genmesh/halfedge_mesh.h> where the index types, ranges,
+// Index_map and Garbage_collection_maps it uses are defined; not for direct
+// use.
+#pragma once
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+namespace genmesh {
+
+namespace detail {
+/// True for genmesh's own mesh class templates (specialized beside each).
+template <template <class> class M>
+inline constexpr bool is_genmesh_mesh = false;
+} // namespace detail
+
+// ---- property maps (HasVertexPoints, HasIndexMap) -------------------------
+
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+auto get(vertex_point_t, const M<P>& m) -> decltype(m.points()) {
+  return m.points();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Index_map<Vertex_index> get(vertex_index_t, const M<P>&) {
+  return {};
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Index_map<Halfedge_index> get(halfedge_index_t, const M<P>&) {
+  return {};
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Index_map<Edge_index> get(edge_index_t, const M<P>&) {
+  return {};
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Index_map<Face_index> get(face_index_t, const M<P>&) {
+  return {};
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t index_bound(vertex_index_t, const M<P>& m) {
+  return m.vertices_size();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t index_bound(halfedge_index_t, const M<P>& m) {
+  return m.halfedges_size();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t index_bound(edge_index_t, const M<P>& m) {
+  return m.edges_size();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t index_bound(face_index_t, const M<P>& m) {
+  return m.faces_size();
+}
+
+// ---- VertexListGraph, EdgeListGraph, HalfedgeListGraph, FaceListGraph -----
+// num_* are live counts (genmesh's convention; see halfedge_mesh.h).
+
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t num_vertices(const M<P>& m) {
+  return m.n_vertices();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t num_halfedges(const M<P>& m) {
+  return m.n_halfedges();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t num_edges(const M<P>& m) {
+  return m.n_edges();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t num_faces(const M<P>& m) {
+  return m.n_faces();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Range<Vertex_iterator> vertices(const M<P>& m) {
+  return m.vertices();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Range<Halfedge_iterator> halfedges(const M<P>& m) {
+  return m.halfedges();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Range<Edge_iterator> edges(const M<P>& m) {
+  return m.edges();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Range<Face_iterator> faces(const M<P>& m) {
+  return m.faces();
+}
+
+// ---- HalfedgeGraph ----------------------------------------------------------
+
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Vertex_index source(Halfedge_index h, const M<P>& m) {
+  return m.source(h);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Vertex_index target(Halfedge_index h, const M<P>& m) {
+  return m.target(h);
+}
+/// source(halfedge(e, g), g).
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Vertex_index source(Edge_index e, const M<P>& m) {
+  return m.source(m.halfedge(e));
+}
+/// target(halfedge(e, g), g).
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Vertex_index target(Edge_index e, const M<P>& m) {
+  return m.target(m.halfedge(e));
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Halfedge_index next(Halfedge_index h, const M<P>& m) {
+  return m.next(h);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Halfedge_index prev(Halfedge_index h, const M<P>& m) {
+  return m.prev(h);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Halfedge_index opposite(Halfedge_index h, const M<P>& m) {
+  return m.opposite(h);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Edge_index edge(Halfedge_index h, const M<P>& m) {
+  return m.edge(h);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Halfedge_index halfedge(Edge_index e, const M<P>& m) {
+  return m.halfedge(e);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Halfedge_index halfedge(Vertex_index v, const M<P>& m) {
+  return m.halfedge(v);
+}
+/// The halfedge u -> v and whether it exists.
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::pair<Halfedge_index, bool> halfedge(Vertex_index u, Vertex_index v, const M<P>& m) {
+  const Halfedge_index h = m.halfedge(u, v);
+  return {h, h.is_valid()};
+}
+/// The edge between u and v, oriented u -> v, and whether it exists.
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::pair<Edge_index, bool> edge(Vertex_index u, Vertex_index v, const M<P>& m) {
+  const Halfedge_index h = m.halfedge(u, v);
+  return {Edge_index(h), h.is_valid()};
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t degree(Vertex_index v, const M<P>& m) {
+  return m.degree(v);
+}
+
+// ---- FaceGraph --------------------------------------------------------------
+
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Face_index face(Halfedge_index h, const M<P>& m) {
+  return m.face(h);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Halfedge_index halfedge(Face_index f, const M<P>& m) {
+  return m.halfedge(f);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t degree(Face_index f, const M<P>& m) {
+  return m.degree(f);
+}
+
+// ---- adding and removing elements ------------------------------------------
+
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Vertex_index add_vertex(M<P>& m) {
+  return m.add_vertex();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Vertex_index add_vertex(const std::type_identity_t<P>& p, M<P>& m) {
+  return m.add_vertex(p);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+void remove_vertex(Vertex_index v, M<P>& m) {
+  m.remove_vertex(v);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+void remove_edge(Edge_index e, M<P>& m) {
+  m.remove_edge(e);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Face_index add_face(M<P>& m) {
+  return m.add_face();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+void remove_face(Face_index f, M<P>& m) {
+  m.remove_face(f);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+void reserve(M<P>& m, std::size_t nv, std::size_t ne, std::size_t nf) {
+  m.reserve(nv, ne, nf);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Garbage_collection_maps collect_garbage(M<P>& m, Garbage_order order = Garbage_order::stable) {
+  return m.collect_garbage(order);
+}
+
+} // namespace genmesh
