@@ -566,6 +566,32 @@ TEST(IncidenceMesh, EdgeRowsStayHomedWhileManifold) {
   EXPECT_EQ(fin.d1t_rows().size(fin.manifold_report().fin_edges.at(0).idx()), 3);
 }
 
+// target(h), face(h) and next(h) (inside a face) read straight off the rows.
+Vertex_index row_target(const Inc& m, Halfedge_index h) {
+  const auto& d0 = m.d0_rows();
+  const std::uint32_t e = h.idx() / 2;
+  for (int k = 0; k < d0.size(e); ++k)
+    if (d0.vals(e)[k] == ((h.idx() & 1u) ? -1 : 1)) return Vertex_index(static_cast<std::uint32_t>(d0.cols(e)[k]));
+  return {};
+}
+Face_index row_face(const Inc& m, Halfedge_index h) {
+  const auto& d1t = m.d1t_rows();
+  const std::uint32_t e = h.idx() / 2;
+  for (int k = 0; k < d1t.size(e); ++k)
+    if (d1t.vals(e)[k] == ((h.idx() & 1u) ? -1 : 1)) return Face_index(static_cast<std::uint32_t>(d1t.cols(e)[k]));
+  return {};
+}
+Halfedge_index row_next(const Inc& m, Halfedge_index h) {
+  const auto& d1 = m.d1_rows();
+  const std::uint32_t f = row_face(m, h).idx();
+  const Vertex_index t = row_target(m, h);
+  for (int k = 0; k < d1.size(f); ++k) {
+    const Halfedge_index x(2u * static_cast<std::uint32_t>(d1.cols(f)[k]) + (d1.vals(f)[k] < 0 ? 1u : 0u));
+    if (x.idx() / 2 != h.idx() / 2 && row_target(m, Halfedge_index(x.idx() ^ 1u)) == t) return x;
+  }
+  return {};
+}
+
 // Low-level edits without update_face_orders(): next() and prev() must not
 // read a stale turn record. Reversing edges (take both sides out of their
 // faces, turn the edge around, put each side into the other face) moves a
@@ -582,6 +608,12 @@ TEST(IncidenceMesh, TurnRecordsNeverStale) {
     for (Halfedge_index h : halfedges(m)) {
       ASSERT_EQ(m.next(h), fresh.next(h)) << what << ' ' << h;
       ASSERT_EQ(m.prev(h), fresh.prev(h)) << what << ' ' << h;
+      // Against the rows themselves, no record involved.
+      ASSERT_EQ(m.target(h), row_target(m, h)) << what << ' ' << h;
+      ASSERT_EQ(m.face(h), row_face(m, h)) << what << ' ' << h;
+      if (row_face(m, h).is_valid()) {
+        ASSERT_EQ(m.next(h), row_next(m, h)) << what << ' ' << h;
+      }
       ASSERT_EQ(m.prev(m.next(h)), h) << what << ' ' << h;
       ASSERT_EQ(m.target(h), m.source(m.next(h))) << what << ' ' << h;
     }

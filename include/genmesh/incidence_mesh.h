@@ -14,11 +14,12 @@
 // keep row e at entries [2e, 2e + 2), and d1 row f at [4f, 4f + 4) (home
 // slots, see detail::Incidence_rows) while every row fits, so target(),
 // face() and next() read short rows without the outer index. Two derived helpers make the derivation cheap and are
-// kept up to date by every edit: per halfedge a turn record (where next(h)
-// and prev(h) sit in its face's d1 row, 4 bits each), so next() reads no d0
-// row and does not search the face's row; per vertex the number of its edges
-// with fewer than two faces, so halfedge(v) does not scan an interior
-// vertex's edges.
+// kept up to date by every edit: per halfedge a 16-bit turn record (where
+// next(h) and prev(h) sit in its face's d1 row and their signs, and the
+// slots of face(h) and target(h) in edge(h)'s d1ᵀ and d0 rows), so a query
+// reads the column it needs and no value array, and next() does not search
+// the face's row; per vertex the number of its edges with fewer than two
+// faces, so halfedge(v) does not scan an interior vertex's edges.
 //
 // Guarantees:
 // - It models HalfedgeGraph, HalfedgeListGraph, VertexListGraph,
@@ -56,8 +57,8 @@
 //   native operations refuse where the generic ones would make one, and where
 //   they would pinch a vertex into two border gaps: see
 //   detail/incidence_operations.h).
-// - next() reads h's turn record, face(h)'s d1ᵀ row and one entry of the
-//   face's d1 row: O(1); faces of more than 16 sides, and faces edited by
+// - next() reads h's turn record, one d1ᵀ column and one d1 column: O(1);
+//   faces of more than 16 sides, and faces edited by
 //   the low-level calls below since the last update_face_orders(), fall back
 //   to scanning d0 rows (O(d) per next).
 //   Measured (benchmarks/bench_incidence.cpp, table in docs/benchmarks.md):
@@ -619,6 +620,8 @@ public:
   /// edge whose ends are not set.
   [[nodiscard]] Vertex_index target(Halfedge_index h) const {
     const std::uint32_t e = h.idx() >> 1;
+    const std::uint16_t turn = turns_[h.idx()];
+    if (turn != no_turn_) return Vertex_index(static_cast<std::uint32_t>(d0_.cols(e)[(turn >> target_slot_bit_) & 1u]));
     const signed char want = (h.idx() & 1u) ? -1 : 1;
     if (d0_.homed()) { // row e at 2e; an end not set reads 0
       const int* c = d0_.home_cols(e);
@@ -641,6 +644,8 @@ public:
   [[nodiscard]] Face_index face(Halfedge_index h) const {
     const std::uint32_t e = h.idx() >> 1;
     if (!manifold_ && bad_edge_[e]) throw_edge_(e, "face");
+    const std::uint16_t turn = turns_[h.idx()];
+    if (turn != no_turn_) return Face_index(static_cast<std::uint32_t>(d1t_.cols(e)[(turn >> face_slot_bit_) & 1u]));
     const signed char want = (h.idx() & 1u) ? -1 : 1;
     if (d1t_.homed()) { // row e at 2e; a missing face reads 0
       const int* c = d1t_.home_cols(e);
@@ -659,28 +664,25 @@ public:
 
   /// The halfedge after h in its face (the one of face(h) leaving target(h)),
   /// or, on the border, the border halfedge leaving target(h). Inside a face:
-  /// the entry of f's d1 row at the successor position turns_[h] records,
-  /// directed by its sign in f; on a face without a valid record, the edge
-  /// other than edge(h) in f's d1 row whose d0 row holds target(h).
+  /// the entry of f's d1 row at the successor position h's turn record
+  /// keeps, directed as the record says (its sign in f); on a face without
+  /// records, the edge other than edge(h) in f's d1 row whose d0 row holds
+  /// target(h).
   [[nodiscard]] Halfedge_index next(Halfedge_index h) const {
-    const std::uint8_t turn = turns_[h.idx()];
+    const std::uint16_t turn = turns_[h.idx()];
+    if (turn != no_turn_) return turn_side_(h, turn, turn & 15u, (turn >> next_side_bit_) & 1u);
     const Face_index f = face(h);
-    if (f.is_valid()) {
-      if (turn != no_turn_) return side_at_position_(f, turn & 15);
-      return side_at_(f, target(h), h);
-    }
+    if (f.is_valid()) return side_at_(f, target(h), h);
     return border_leaving_(target(h), h);
   }
 
   /// The halfedge before h in its face, or on the border the border halfedge
   /// entering source(h).
   [[nodiscard]] Halfedge_index prev(Halfedge_index h) const {
-    const std::uint8_t turn = turns_[h.idx()];
+    const std::uint16_t turn = turns_[h.idx()];
+    if (turn != no_turn_) return turn_side_(h, turn, (turn >> 4) & 15u, (turn >> prev_side_bit_) & 1u);
     const Face_index f = face(h);
-    if (f.is_valid()) {
-      if (turn != no_turn_) return side_at_position_(f, turn >> 4);
-      return side_at_(f, source(h), h);
-    }
+    if (f.is_valid()) return side_at_(f, source(h), h);
     return border_entering_(source(h), h);
   }
 
@@ -912,6 +914,8 @@ public:
   /// Marks f removed and frees its index; its sides become border.
   void remove_face(Face_index f) {
     const std::uint32_t i = f.idx();
+    for (int k = 0; k < d1_.size(i); ++k) // f's sides lose their records, the faces beside it their slots
+      touch_edge_faces_(static_cast<std::uint32_t>(d1_.cols(i)[k]));
     for (int k = 0; k < d1_.size(i); ++k) {
       const auto e = static_cast<std::uint32_t>(d1_.cols(i)[k]);
       unhook_border_(e);
@@ -984,6 +988,7 @@ public:
     const signed char s = (h.idx() & 1u) ? -1 : 1;
     const int e = static_cast<int>(h.idx() >> 1);
     touch_face_(f.idx());
+    touch_edge_faces_(static_cast<std::uint32_t>(e)); // the other face's slot in e's d1ᵀ row may move
     turns_[h.idx()] = no_turn_;
     d1_.set(f.idx(), e, s);
     d1t_.ensure_room(static_cast<std::uint32_t>(e), 2);
@@ -994,7 +999,7 @@ public:
   /// h is no longer a side of f.
   void remove_side(Face_index f, Halfedge_index h) {
     const int e = static_cast<int>(h.idx() >> 1);
-    touch_face_(f.idx());
+    touch_edge_faces_(static_cast<std::uint32_t>(e)); // f and the other face, whose slot may move
     d1_.erase(f.idx(), e);
     unhook_border_(static_cast<std::uint32_t>(e));
     d1t_.erase(static_cast<std::uint32_t>(e), static_cast<int>(f.idx()));
@@ -1052,7 +1057,7 @@ public:
     return points_.capacity() * sizeof(P) + d0_.memory_bytes() + d0t_.memory_bytes() + d1_.memory_bytes() +
            d1t_.memory_bytes() + bits(vremoved_) + bits(eremoved_) + bits(fremoved_) +
            (vfree_.capacity() + efree_.capacity() + ffree_.capacity()) * sizeof(std::uint32_t) +
-           bits(bad_vertex_) + bits(bad_edge_) + face_state_.capacity() + turns_.capacity() +
+           bits(bad_vertex_) + bits(bad_edge_) + face_state_.capacity() + turns_.capacity() * sizeof(std::uint16_t) +
            (dirty_.capacity() + border_edges_.capacity()) * sizeof(std::uint32_t);
   }
 
@@ -1205,19 +1210,33 @@ private:
   }
 
   // ---- face orders: next() in one lookup -------------------------------------
-  // For a face f of 2..16 sides that is a closed directed cycle, each side h
-  // records in turns_[h] where its neighbours sit in f's d1 row: the low 4
-  // bits the position of next(h), the high 4 bits that of prev(h) (never
-  // both 15: no_turn_ is free to mean "no record"). A record depends only on
-  // f's row and its edges' d0 rows, so every edit that changes those touches
-  // f first, which clears the records of f's sides (add_side() clears the
-  // joining side's), and update_face_orders() records them again; until then
-  // next() derives the successor from d0 rows. face_state_[f]: order_dirty_
-  // (f is in dirty_), order_known_, order_unknown_ (too large, not a cycle,
-  // or removed: its sides keep no record). next() reads only turns_[h], on
-  // the halfedge's own line, never a per-face flag.
+  // For a face f of 2..16 sides that is a closed directed cycle on a
+  // manifold mesh, each side h records in turns_[h] where to read its
+  // answers in the rows: the positions of next(h) and prev(h) in f's d1 row
+  // and their signs there, the slot of f in edge(h)'s d1ᵀ row and the slot
+  // of target(h) in its d0 row (see next_side_bit_). With it next(h) reads
+  // one d1ᵀ column and one d1 column, face(h) and target(h) one column each,
+  // and no value array. A record depends on f's row, its edges' d0 rows and
+  // their d1ᵀ rows, so every edit that changes those touches f first (an
+  // edit of an edge's d1ᵀ row touches every face at the edge), which clears
+  // the records of f's sides (add_side() clears the joining side's,
+  // remove_face() its sides'), and update_face_orders() records them again;
+  // until then the queries derive from the rows. face_state_[f]:
+  // order_dirty_ (f is in dirty_), order_known_, order_unknown_ (too large,
+  // not a cycle, removed, or a non-manifold mesh: its sides keep no record).
   static constexpr std::uint8_t order_dirty_ = 0, order_known_ = 1, order_unknown_ = 2;
-  static constexpr std::uint8_t no_turn_ = 0xFF;
+  // A record: bits 0-3 the position of next(h) in f's d1 row, 4-7 that of
+  // prev(h), then the sides of next(h) and prev(h) (their signs in f), the
+  // slot of f in edge(h)'s d1ᵀ row and the slot of target(h) in its d0 row.
+  static constexpr unsigned next_side_bit_ = 8, prev_side_bit_ = 9, face_slot_bit_ = 10, target_slot_bit_ = 11;
+  static constexpr std::uint16_t no_turn_ = 0xFFFF;
+
+  // The side of face(h) at position k of its d1 row, on side `side`.
+  Halfedge_index turn_side_(Halfedge_index h, std::uint16_t turn, unsigned k, unsigned side) const {
+    const std::uint32_t e = h.idx() >> 1;
+    const auto f = static_cast<std::uint32_t>(d1t_.cols(e)[(turn >> face_slot_bit_) & 1u]);
+    return Halfedge_index(2u * static_cast<std::uint32_t>(d1_.cols(f)[k]) + side);
+  }
 
   void touch_face_(std::uint32_t f) {
     if (face_state_[f] != order_dirty_) {
@@ -1233,18 +1252,35 @@ private:
   // Computes f's order and records it in its sides' turns_ (or marks f
   // order_unknown_).
   void record_face_order_(std::uint32_t f) {
-    const std::uint64_t w = face_order_(f);
-    if (w == slow_order_) {
+    const std::uint64_t w = manifold_ ? face_order_(f) : slow_order_;
+    const int n = d1_.size(f);
+    // Slots: f in each side's d1ᵀ row, the side's target in its d0 row.
+    std::uint16_t slots[16] = {};
+    for (int k = 0; w != slow_order_ && k < n; ++k) {
+      const Halfedge_index hk = side_at_position_(Face_index(f), k);
+      const std::uint32_t e = hk.idx() >> 1;
+      const int nf = d1t_.size(e);
+      const int fs = nf > 0 && d1t_.cols(e)[0] == static_cast<int>(f) ? 0 : 1;
+      const signed char want = (hk.idx() & 1u) ? -1 : 1;
+      if (nf > 2 || fs >= nf || d0_.size(e) != 2) {
+        slots[0] = no_turn_;
+        break;
+      }
+      const int ts = d0_.vals(e)[0] == want ? 0 : 1;
+      slots[k] = static_cast<std::uint16_t>((fs << face_slot_bit_) | (ts << target_slot_bit_));
+    }
+    if (w == slow_order_ || slots[0] == no_turn_) {
       face_state_[f] = order_unknown_;
       forget_turns_(f);
       return;
     }
-    const int n = d1_.size(f);
+    for (int k = 0; k < n; ++k) turns_[side_at_position_(Face_index(f), k).idx()] = slots[k];
     for (int k = 0; k < n; ++k) {
-      const auto next_k = static_cast<std::uint8_t>((w >> (4 * k)) & 15u);
-      const Halfedge_index hk = side_at_position_(Face_index(f), k), hn = side_at_position_(Face_index(f), next_k);
-      turns_[hk.idx()] = static_cast<std::uint8_t>((turns_[hk.idx()] & 0xF0u) | next_k);
-      turns_[hn.idx()] = static_cast<std::uint8_t>((turns_[hn.idx()] & 0x0Fu) | (k << 4));
+      const auto next_k = static_cast<unsigned>((w >> (4 * k)) & 15u);
+      const Halfedge_index hk = side_at_position_(Face_index(f), k),
+                           hn = side_at_position_(Face_index(f), static_cast<int>(next_k));
+      turns_[hk.idx()] |= static_cast<std::uint16_t>(next_k | ((hn.idx() & 1u) << next_side_bit_));
+      turns_[hn.idx()] |= static_cast<std::uint16_t>((unsigned(k) << 4) | ((hk.idx() & 1u) << prev_side_bit_));
     }
     face_state_[f] = order_known_;
   }
@@ -1377,6 +1413,10 @@ private:
     bad_edge_.clear();
     bad_vertex_.clear();
     if (manifold_) return;
+    // Records are for manifold meshes only: queries on a non-manifold one go
+    // the checked way.
+    std::fill(turns_.begin(), turns_.end(), no_turn_);
+    std::fill(face_state_.begin(), face_state_.end(), order_unknown_);
     bad_edge_.assign(edges_size(), false);
     bad_vertex_.assign(vertices_size(), false);
     for (auto e : r.fin_edges) bad_edge_[e.idx()] = true;
@@ -1412,7 +1452,7 @@ private:
   bool manifold_ = true;
   std::vector<bool> bad_edge_, bad_vertex_; // empty while manifold_
   std::vector<std::uint8_t> face_state_; // per face, see record_face_order_()
-  std::vector<std::uint8_t> turns_;      // per halfedge, see record_face_order_()
+  std::vector<std::uint16_t> turns_;     // per halfedge, see record_face_order_()
   std::vector<std::uint32_t> dirty_;     // faces with face_state_ order_dirty_
   std::vector<std::uint32_t> border_edges_; // per vertex, see hook_border_()
 };
