@@ -62,10 +62,10 @@
 //   the low-level calls below since the last update_face_orders(), fall back
 //   to scanning d0 rows (O(d) per next).
 //   Measured (benchmarks/bench_incidence.cpp, table in docs/benchmarks.md):
-//   next() 6–10× slower than Halfedge_mesh, around a face 6–9×, around a
-//   vertex 8–10× in cache and 11–16× on an 89k-triangle mesh (seven arrays
-//   per step against one record), local operations 6–15×; 137 bytes per
-//   triangle against 66.
+//   next() 6–7× slower than Halfedge_mesh, face(opposite(h)) 3×, around a
+//   face 8–9×, around a vertex 7–9× in cache and 10× on an 89k-triangle mesh
+//   (four arrays per step against one record), local operations 8–16×; 140
+//   bytes per triangle against 66.
 // - Local operations need a manifold mesh; on a mesh loaded with
 //   non-manifold elements they refuse (predicates false, operations empty).
 // - collect_garbage() rebuilds all four matrices: O(mesh), not O(garbage).
