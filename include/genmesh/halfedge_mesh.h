@@ -1372,14 +1372,17 @@ using Scoped_face_property = Scoped_property<Face_index, T>;
 
 } // namespace genmesh
 
+#include <genmesh/detail/mesh_functions.h>
+
 // ---------------------------------------------------------------------------
-// boost::graph_traits (choices copied from CGAL's Surface_mesh traits)
+// boost::graph_traits (choices copied from CGAL's Surface_mesh traits; the
+// part every genmesh mesh shares: detail::Mesh_graph_traits)
 // ---------------------------------------------------------------------------
 
 namespace boost {
 
 template <class P>
-struct graph_traits<genmesh::Halfedge_mesh<P>> {
+struct graph_traits<genmesh::Halfedge_mesh<P>> : genmesh::detail::Mesh_graph_traits<P> {
 private:
   struct Traversal_category : public virtual boost::bidirectional_graph_tag,
                               public virtual boost::vertex_list_graph_tag,
@@ -1387,34 +1390,10 @@ private:
                               public virtual boost::adjacency_graph_tag {};
 
 public:
-  using vertex_descriptor = genmesh::Vertex_index;
-  using halfedge_descriptor = genmesh::Halfedge_index;
-  using edge_descriptor = genmesh::Edge_index;
-  using face_descriptor = genmesh::Face_index;
-  using vertex_property_type = P;
-
-  using directed_category = boost::undirected_tag;
-  using edge_parallel_category = boost::disallow_parallel_edge_tag;
   using traversal_category = Traversal_category;
-
-  using vertex_iterator = genmesh::Vertex_iterator;
-  using halfedge_iterator = genmesh::Halfedge_iterator;
-  using edge_iterator = genmesh::Edge_iterator;
-  using face_iterator = genmesh::Face_iterator;
-
   using in_edge_iterator = genmesh::In_edge_iterator;
   using out_edge_iterator = genmesh::Out_edge_iterator;
   using adjacency_iterator = genmesh::Vertex_around_target_iterator;
-
-  using vertices_size_type = std::size_t;
-  using halfedges_size_type = std::size_t;
-  using edges_size_type = std::size_t;
-  using faces_size_type = std::size_t;
-  using degree_size_type = std::size_t;
-
-  static vertex_descriptor null_vertex() { return {}; }
-  static halfedge_descriptor null_halfedge() { return {}; }
-  static face_descriptor null_face() { return {}; }
 };
 
 template <class P>
@@ -1425,8 +1404,6 @@ struct graph_traits<const genmesh::Halfedge_mesh<P>> : graph_traits<genmesh::Hal
 // ---------------------------------------------------------------------------
 // CGAL BGL free functions (found by ADL through Halfedge_mesh)
 // ---------------------------------------------------------------------------
-
-#include <genmesh/detail/mesh_functions.h>
 
 namespace genmesh {
 

@@ -1471,36 +1471,13 @@ inline constexpr bool is_genmesh_mesh<Incidence_mesh> = true; // the shared BGL 
 namespace boost {
 
 template <class P>
-struct graph_traits<genmesh::Incidence_mesh<P>> {
+struct graph_traits<genmesh::Incidence_mesh<P>> : genmesh::detail::Mesh_graph_traits<P> {
 private:
   struct Traversal_category : public virtual boost::vertex_list_graph_tag,
                               public virtual boost::edge_list_graph_tag {};
 
 public:
-  using vertex_descriptor = genmesh::Vertex_index;
-  using halfedge_descriptor = genmesh::Halfedge_index;
-  using edge_descriptor = genmesh::Edge_index;
-  using face_descriptor = genmesh::Face_index;
-  using vertex_property_type = P;
-
-  using directed_category = boost::undirected_tag;
-  using edge_parallel_category = boost::disallow_parallel_edge_tag;
   using traversal_category = Traversal_category;
-
-  using vertex_iterator = genmesh::Vertex_iterator;
-  using halfedge_iterator = genmesh::Halfedge_iterator;
-  using edge_iterator = genmesh::Edge_iterator;
-  using face_iterator = genmesh::Face_iterator;
-
-  using vertices_size_type = std::size_t;
-  using halfedges_size_type = std::size_t;
-  using edges_size_type = std::size_t;
-  using faces_size_type = std::size_t;
-  using degree_size_type = std::size_t;
-
-  static vertex_descriptor null_vertex() { return {}; }
-  static halfedge_descriptor null_halfedge() { return {}; }
-  static face_descriptor null_face() { return {}; }
 };
 
 template <class P>

@@ -1,7 +1,8 @@
 // genmesh/detail/mesh_functions.h — the CGAL BGL free functions of genmesh's
 // own meshes, written once.
 //
-// What it is: num_vertices, vertices, source, target, next, prev, opposite,
+// What it is: the part of boost::graph_traits every genmesh mesh shares
+// (detail::Mesh_graph_traits) and num_vertices, vertices, source, target, next, prev, opposite,
 // edge, halfedge, face, degree, add_/remove_ elements, the index and point
 // property maps, index_bound, reserve and collect_garbage for every mesh class
 // template M that opts in with detail::is_genmesh_mesh<M> = true
@@ -28,6 +29,37 @@ namespace detail {
 /// True for genmesh's own mesh class templates (specialized beside each).
 template <template <class> class M>
 inline constexpr bool is_genmesh_mesh = false;
+
+/// What boost::graph_traits says of every genmesh mesh (genmesh's index
+/// types and iterators, 32-bit indices in std::size_t counts, no parallel
+/// edges); each mesh's specialization adds its traversal category and
+/// whatever else it offers.
+template <class P>
+struct Mesh_graph_traits {
+  using vertex_descriptor = Vertex_index;
+  using halfedge_descriptor = Halfedge_index;
+  using edge_descriptor = Edge_index;
+  using face_descriptor = Face_index;
+  using vertex_property_type = P;
+
+  using directed_category = boost::undirected_tag;
+  using edge_parallel_category = boost::disallow_parallel_edge_tag;
+
+  using vertex_iterator = Vertex_iterator;
+  using halfedge_iterator = Halfedge_iterator;
+  using edge_iterator = Edge_iterator;
+  using face_iterator = Face_iterator;
+
+  using vertices_size_type = std::size_t;
+  using halfedges_size_type = std::size_t;
+  using edges_size_type = std::size_t;
+  using faces_size_type = std::size_t;
+  using degree_size_type = std::size_t;
+
+  static vertex_descriptor null_vertex() { return {}; }
+  static halfedge_descriptor null_halfedge() { return {}; }
+  static face_descriptor null_face() { return {}; }
+};
 } // namespace detail
 
 // ---- property maps (HasVertexPoints, HasIndexMap) -------------------------
