@@ -571,32 +571,7 @@ std::optional<halfedge_descriptor_t<G>> add_center_vertex(halfedge_descriptor_t<
 /// face). Cost: the sides of v's faces.
 template <MutableFaceGraph G>
 bool can_remove_center_vertex(halfedge_descriptor_t<G> h, const G& g) {
-  namespace lo = detail::lo;
-  const auto v = target(h, g);
-  if (lo::border_vertex(v, g) || lo::vertex_degree(v, g) < 3) return false;
-  // Faces across the link: the sides of the star's faces away from v.
-  bool found = false, distinct = false, any_hole = false;
-  face_descriptor_t<G> first{};
-  lo::Corner_list<G> link;
-  auto x = h;
-  do {
-    // x targets v; walk face(x) from next(x) (leaving v) to prev(x) excluded.
-    for (auto y = next(next(x, g), g); y != x; y = next(y, g)) {
-      if (target(y, g) == v) break;
-      link.push_back(target(y, g));
-      const auto fo = face(opposite(y, g), g);
-      if (fo == lo::null_f<G>()) {
-        any_hole = true;
-      } else if (!found) {
-        first = fo;
-        found = true;
-      } else if (fo != first) {
-        distinct = true;
-      }
-    }
-    x = opposite(next(x, g), g);
-  } while (x != h);
-  return (any_hole || distinct || !found) && lo::all_distinct<G>(link);
+  return detail::lo::center_vertex_removable(h, g);
 }
 
 /// Removes target(h), its edges and faces, leaving one face bounded by its

@@ -472,38 +472,7 @@ std::optional<Halfedge_index> genmesh_native_add_center_vertex(Halfedge_index h,
 
 template <class P>
 bool genmesh_native_can_remove_center_vertex(Halfedge_index h, const Incidence_mesh<P>& g) {
-  namespace lo = detail::lo;
-  if (!g.is_manifold() || !h.is_valid()) return false;
-  const auto v = target(h, g);
-  if (lo::border_vertex(v, g) || g.degree(v) < 3) return false;
-  bool found = false, distinct = false, any_hole = false;
-  Face_index first{};
-  auto x = h;
-  do {
-    for (auto y = next(next(x, g), g); y != x; y = next(y, g)) {
-      if (target(y, g) == v) break;
-      const auto fo = face(opposite(y, g), g);
-      if (!fo.is_valid()) {
-        any_hole = true;
-      } else if (!found) {
-        first = fo;
-        found = true;
-      } else if (fo != first) {
-        distinct = true;
-      }
-    }
-    x = opposite(next(x, g), g);
-  } while (x != h);
-  if (!(any_hole || distinct || !found)) return false;
-  // The merged face (the link) must visit each vertex once (see can_join_face).
-  boost::container::small_vector<Vertex_index, 16> link;
-  x = h;
-  do {
-    for (auto y = next(next(x, g), g); y != x; y = next(y, g)) link.push_back(target(y, g));
-    x = opposite(next(x, g), g);
-  } while (x != h);
-  std::sort(link.begin(), link.end());
-  return std::adjacent_find(link.begin(), link.end()) == link.end();
+  return g.is_manifold() && h.is_valid() && detail::lo::center_vertex_removable(h, g);
 }
 
 template <class P, class Visitor = Mutation_visitor>

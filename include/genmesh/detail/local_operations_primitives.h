@@ -229,6 +229,39 @@ bool all_distinct(Corner_list<G>& vs) {
   return std::adjacent_find(vs.begin(), vs.end()) == vs.end();
 }
 
+/// can_remove_center_vertex's test, read-only (every backend's predicate
+/// calls it): target(h) is an inner vertex of degree ≥ 3, the faces beyond
+/// its star are not all one and the same face, and the link visits each
+/// vertex once.
+template <class G>
+bool center_vertex_removable(H<G> h, const G& g) {
+  const V<G> v = target(h, g);
+  if (border_vertex(v, g) || vertex_degree(v, g) < 3) return false;
+  // Faces across the link: the sides of the star's faces away from v.
+  bool found = false, distinct = false, any_hole = false;
+  F<G> first{};
+  Corner_list<G> link;
+  H<G> x = h;
+  do {
+    // x targets v; walk face(x) from next(x) (leaving v) to prev(x) excluded.
+    for (H<G> y = next(next(x, g), g); y != x; y = next(y, g)) {
+      if (target(y, g) == v) break;
+      link.push_back(target(y, g));
+      const F<G> fo = face(opposite(y, g), g);
+      if (fo == null_f<G>()) {
+        any_hole = true;
+      } else if (!found) {
+        first = fo;
+        found = true;
+      } else if (fo != first) {
+        distinct = true;
+      }
+    }
+    x = opposite(next(x, g), g);
+  } while (x != h);
+  return (any_hole || distinct || !found) && all_distinct<G>(link);
+}
+
 /// Whether the face (or hole) that join_face_raw(h) leaves visits each vertex
 /// once and, when face(opposite(h)) joins a hole, leaves no vertex with two
 /// border gaps (a pinch). Cost: joining into a hole (h a border halfedge),
