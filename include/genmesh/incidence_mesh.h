@@ -1254,22 +1254,21 @@ private:
   void record_face_order_(std::uint32_t f) {
     const std::uint64_t w = manifold_ ? face_order_(f) : slow_order_;
     const int n = d1_.size(f);
-    // Slots: f in each side's d1ᵀ row, the side's target in its d0 row.
+    // Slots: f in each side's d1ᵀ row, the side's target in its d0 row (both
+    // rows of at most two entries, or no record).
     std::uint16_t slots[16] = {};
-    for (int k = 0; w != slow_order_ && k < n; ++k) {
+    bool recordable = w != slow_order_;
+    for (int k = 0; recordable && k < n; ++k) {
       const Halfedge_index hk = side_at_position_(Face_index(f), k);
       const std::uint32_t e = hk.idx() >> 1;
       const int nf = d1t_.size(e);
       const int fs = nf > 0 && d1t_.cols(e)[0] == static_cast<int>(f) ? 0 : 1;
       const signed char want = (hk.idx() & 1u) ? -1 : 1;
-      if (nf > 2 || fs >= nf || d0_.size(e) != 2) {
-        slots[0] = no_turn_;
-        break;
-      }
-      const int ts = d0_.vals(e)[0] == want ? 0 : 1;
+      recordable = nf <= 2 && fs < nf && d0_.size(e) == 2;
+      const int ts = recordable && d0_.vals(e)[0] == want ? 0 : 1;
       slots[k] = static_cast<std::uint16_t>((fs << face_slot_bit_) | (ts << target_slot_bit_));
     }
-    if (w == slow_order_ || slots[0] == no_turn_) {
+    if (!recordable) {
       face_state_[f] = order_unknown_;
       forget_turns_(f);
       return;

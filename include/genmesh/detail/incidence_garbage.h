@@ -5,7 +5,7 @@
 // Halfedge_mesh::collect_garbage() uses, so both meshes give the same maps;
 // the rows are then rebuilt compact through assign_incidences() (the bulk
 // path of load_soup and build_mesh), which also recomputes the derived
-// helpers (order words, border counts). O(V + E + F + non-zeros).
+// helpers (turn records, border counts). O(V + E + F + non-zeros).
 #pragma once
 
 #include <genmesh/incidence_mesh.h>
