@@ -568,18 +568,12 @@ TEST(IncidenceMesh, EdgeRowsStayHomedWhileManifold) {
 
 // target(h), face(h) and next(h) (inside a face) read straight off the rows.
 Vertex_index row_target(const Inc& m, Halfedge_index h) {
-  const auto& d0 = m.d0_rows();
-  const std::uint32_t e = h.idx() / 2;
-  for (int k = 0; k < d0.size(e); ++k)
-    if (d0.vals(e)[k] == ((h.idx() & 1u) ? -1 : 1)) return Vertex_index(static_cast<std::uint32_t>(d0.cols(e)[k]));
-  return {};
+  const int c = m.d0_rows().column_of(h.idx() / 2, (h.idx() & 1u) ? -1 : 1);
+  return c < 0 ? Vertex_index() : Vertex_index(static_cast<std::uint32_t>(c));
 }
 Face_index row_face(const Inc& m, Halfedge_index h) {
-  const auto& d1t = m.d1t_rows();
-  const std::uint32_t e = h.idx() / 2;
-  for (int k = 0; k < d1t.size(e); ++k)
-    if (d1t.vals(e)[k] == ((h.idx() & 1u) ? -1 : 1)) return Face_index(static_cast<std::uint32_t>(d1t.cols(e)[k]));
-  return {};
+  const int c = m.d1t_rows().column_of(h.idx() / 2, (h.idx() & 1u) ? -1 : 1);
+  return c < 0 ? Face_index() : Face_index(static_cast<std::uint32_t>(c));
 }
 Halfedge_index row_next(const Inc& m, Halfedge_index h) {
   const auto& d1 = m.d1_rows();

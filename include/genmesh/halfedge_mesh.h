@@ -580,6 +580,17 @@ using Halfedge_iterator = detail::Index_iterator<Halfedge_index, 1>;
 using Edge_iterator = detail::Index_iterator<Edge_index, 0>;
 using Face_iterator = detail::Index_iterator<Face_index, 0>;
 
+namespace detail {
+/// The live elements [0, bound) of one kind, `live` of them; removed ones are
+/// skipped only when the mesh has garbage (else no flag is read).
+template <class It>
+Range<It> live_range(std::size_t bound, std::size_t live, const std::vector<bool>& removed, bool garbage) {
+  const auto n = static_cast<std::uint32_t>(bound);
+  const std::vector<bool>* r = garbage ? &removed : nullptr;
+  return {It(0, n, r), It(n, n, r), live};
+}
+} // namespace detail
+
 using Halfedge_around_face_iterator = detail::Cycle_iterator<detail::Step_face>;
 using Vertex_around_face_iterator = detail::Cycle_iterator<detail::Step_face_vertex>;
 using Halfedge_around_target_iterator = detail::Cycle_iterator<detail::Step_target>;
@@ -969,24 +980,16 @@ public:
 
   /// Live vertices by increasing index (also halfedges(), edges(), faces()).
   [[nodiscard]] Range<Vertex_iterator> vertices() const {
-    const auto n = static_cast<std::uint32_t>(vertices_size());
-    const std::vector<bool>* r = garbage_ ? &vremoved_ : nullptr;
-    return {Vertex_iterator(0, n, r), Vertex_iterator(n, n, r), n_vertices()};
+    return detail::live_range<Vertex_iterator>(vertices_size(), n_vertices(), vremoved_, garbage_);
   }
   [[nodiscard]] Range<Halfedge_iterator> halfedges() const {
-    const auto n = static_cast<std::uint32_t>(halfedges_size());
-    const std::vector<bool>* r = garbage_ ? &eremoved_ : nullptr;
-    return {Halfedge_iterator(0, n, r), Halfedge_iterator(n, n, r), n_halfedges()};
+    return detail::live_range<Halfedge_iterator>(halfedges_size(), n_halfedges(), eremoved_, garbage_);
   }
   [[nodiscard]] Range<Edge_iterator> edges() const {
-    const auto n = static_cast<std::uint32_t>(edges_size());
-    const std::vector<bool>* r = garbage_ ? &eremoved_ : nullptr;
-    return {Edge_iterator(0, n, r), Edge_iterator(n, n, r), n_edges()};
+    return detail::live_range<Edge_iterator>(edges_size(), n_edges(), eremoved_, garbage_);
   }
   [[nodiscard]] Range<Face_iterator> faces() const {
-    const auto n = static_cast<std::uint32_t>(faces_size());
-    const std::vector<bool>* r = garbage_ ? &fremoved_ : nullptr;
-    return {Face_iterator(0, n, r), Face_iterator(n, n, r), n_faces()};
+    return detail::live_range<Face_iterator>(faces_size(), n_faces(), fremoved_, garbage_);
   }
 
   /// h, next(h), next(next(h)), ... once around the cycle (empty for null h).

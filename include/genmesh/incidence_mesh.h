@@ -220,6 +220,18 @@ public:
     return {cols(r), static_cast<std::size_t>(size(r))};
   }
 
+  /// The column of row r that holds `value` (never 0), -1 if none. Homed,
+  /// the row's K home entries are scanned without reading its count (the
+  /// values past its end are zero).
+  [[nodiscard]] int column_of(std::uint32_t r, signed char value) const {
+    const int n = homed_ ? home_ : size(r);
+    const int* c = cols(r);
+    const signed char* s = vals(r);
+    for (int k = 0; k < n; ++k)
+      if (s[k] == value) return c[k];
+    return -1;
+  }
+
   /// The value at (r, c), 0 if absent.
   [[nodiscard]] signed char at(std::uint32_t r, int c) const {
     const int n = size(r);
@@ -622,20 +634,8 @@ public:
     const std::uint32_t e = h.idx() >> 1;
     const std::uint16_t turn = turns_[h.idx()];
     if (turn != no_turn_) return Vertex_index(static_cast<std::uint32_t>(d0_.cols(e)[(turn >> target_slot_bit_) & 1u]));
-    const signed char want = (h.idx() & 1u) ? -1 : 1;
-    if (d0_.homed()) { // row e at 2e; an end not set reads 0
-      const int* c = d0_.home_cols(e);
-      const signed char* s = d0_.home_vals(e);
-      if (s[0] == want) return Vertex_index(static_cast<std::uint32_t>(c[0]));
-      if (s[1] == want) return Vertex_index(static_cast<std::uint32_t>(c[1]));
-      return {};
-    }
-    const int n = d0_.size(e);
-    const int* c = d0_.cols(e);
-    const signed char* s = d0_.vals(e);
-    for (int k = 0; k < n; ++k)
-      if (s[k] == want) return Vertex_index(static_cast<std::uint32_t>(c[k]));
-    return {};
+    const int c = d0_.column_of(e, (h.idx() & 1u) ? -1 : 1);
+    return c < 0 ? Vertex_index() : Vertex_index(static_cast<std::uint32_t>(c));
   }
   [[nodiscard]] Vertex_index source(Halfedge_index h) const { return target(opposite(h)); }
 
@@ -646,20 +646,8 @@ public:
     if (!manifold_ && bad_edge_[e]) throw_edge_(e, "face");
     const std::uint16_t turn = turns_[h.idx()];
     if (turn != no_turn_) return Face_index(static_cast<std::uint32_t>(d1t_.cols(e)[(turn >> face_slot_bit_) & 1u]));
-    const signed char want = (h.idx() & 1u) ? -1 : 1;
-    if (d1t_.homed()) { // row e at 2e; a missing face reads 0
-      const int* c = d1t_.home_cols(e);
-      const signed char* s = d1t_.home_vals(e);
-      if (s[0] == want) return Face_index(static_cast<std::uint32_t>(c[0]));
-      if (s[1] == want) return Face_index(static_cast<std::uint32_t>(c[1]));
-      return {};
-    }
-    const int n = d1t_.size(e);
-    const int* c = d1t_.cols(e);
-    const signed char* s = d1t_.vals(e);
-    for (int k = 0; k < n; ++k)
-      if (s[k] == want) return Face_index(static_cast<std::uint32_t>(c[k]));
-    return {};
+    const int c = d1t_.column_of(e, (h.idx() & 1u) ? -1 : 1);
+    return c < 0 ? Face_index() : Face_index(static_cast<std::uint32_t>(c));
   }
 
   /// The halfedge after h in its face (the one of face(h) leaving target(h)),
@@ -1064,24 +1052,16 @@ public:
   // ---- ranges -------------------------------------------------------------
 
   [[nodiscard]] Range<Vertex_iterator> vertices() const {
-    const auto n = static_cast<std::uint32_t>(vertices_size());
-    const std::vector<bool>* r = garbage_ ? &vremoved_ : nullptr;
-    return {Vertex_iterator(0, n, r), Vertex_iterator(n, n, r), n_vertices()};
+    return detail::live_range<Vertex_iterator>(vertices_size(), n_vertices(), vremoved_, garbage_);
   }
   [[nodiscard]] Range<Halfedge_iterator> halfedges() const {
-    const auto n = static_cast<std::uint32_t>(halfedges_size());
-    const std::vector<bool>* r = garbage_ ? &eremoved_ : nullptr;
-    return {Halfedge_iterator(0, n, r), Halfedge_iterator(n, n, r), n_halfedges()};
+    return detail::live_range<Halfedge_iterator>(halfedges_size(), n_halfedges(), eremoved_, garbage_);
   }
   [[nodiscard]] Range<Edge_iterator> edges() const {
-    const auto n = static_cast<std::uint32_t>(edges_size());
-    const std::vector<bool>* r = garbage_ ? &eremoved_ : nullptr;
-    return {Edge_iterator(0, n, r), Edge_iterator(n, n, r), n_edges()};
+    return detail::live_range<Edge_iterator>(edges_size(), n_edges(), eremoved_, garbage_);
   }
   [[nodiscard]] Range<Face_iterator> faces() const {
-    const auto n = static_cast<std::uint32_t>(faces_size());
-    const std::vector<bool>* r = garbage_ ? &fremoved_ : nullptr;
-    return {Face_iterator(0, n, r), Face_iterator(n, n, r), n_faces()};
+    return detail::live_range<Face_iterator>(faces_size(), n_faces(), fremoved_, garbage_);
   }
 
   // ---- points -------------------------------------------------------------
@@ -1096,7 +1076,7 @@ public:
 
   // ---- bulk building (genmesh_native_link_soup, load_soup) ----------------
 
-  /// Replaces everything: points; edge i from ends[2i] to ends[2i+1]; face f
+  /// Replaces everything: points (Eigen vectors, or already P); edge i from ends[2i] to ends[2i+1]; face f
   /// with sides corner_edge[c] (sign corner_sign[c]) for c in
   /// [offsets[f], offsets[f+1]). No check.
   template <class Points>
@@ -1105,7 +1085,10 @@ public:
     Incidence_mesh m;
     const std::size_t np = pts.size(), ne = ends.size() / 2, nf = offsets.size() - 1, nc = corner_edge.size();
     m.points_.reserve(np);
-    for (const auto& p : pts) m.points_.push_back(from_eigen<P>(p));
+    for (const auto& p : pts) {
+      if constexpr (std::is_convertible_v<decltype(p), const P&>) m.points_.push_back(p);
+      else m.points_.push_back(from_eigen<P>(p));
+    }
     m.vremoved_.assign(np, false);
     m.eremoved_.assign(ne, false);
     m.fremoved_.assign(nf, false);

@@ -10,8 +10,6 @@
 
 #include <genmesh/incidence_mesh.h>
 
-#include <ranges>
-
 namespace genmesh {
 
 template <class P>
@@ -61,12 +59,8 @@ Garbage_collection_maps Incidence_mesh<P>::collect_garbage(Garbage_order order) 
     pts.reserve(vold.size());
     for (const std::uint32_t v : vold) pts.push_back(points_[v]);
 
-    // The bulk path takes Eigen points; the exact points are put back below.
     const bool recycle = recycle_;
-    assign_incidences(std::views::transform(std::views::iota(std::size_t(0), vold.size()),
-                                            [](std::size_t) { return Eigen::Vector3d::Zero().eval(); }),
-                      ends, offsets, corner_edge, corner_sign);
-    points_.swap(pts);
+    assign_incidences(pts, ends, offsets, corner_edge, corner_sign);
     recycle_ = recycle;
     update_manifold_flags_();
   }
@@ -84,13 +78,6 @@ Garbage_collection_maps Incidence_mesh<P>::collect_garbage(Garbage_order order) 
   maps.faces.reserve(fmap.size());
   for (const auto i : fmap) maps.faces.emplace_back(i);
   return maps;
-}
-
-/// Drops removed elements and renumbers the survivors; see
-/// Incidence_mesh::collect_garbage().
-template <class P>
-Garbage_collection_maps collect_garbage(Incidence_mesh<P>& m, Garbage_order order = Garbage_order::stable) {
-  return m.collect_garbage(order);
 }
 
 } // namespace genmesh
