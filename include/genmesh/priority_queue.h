@@ -24,10 +24,10 @@
 // pairing-heap variant) on the edge-collapse access pattern — 1M keys with
 // random costs; pop, erase 6 and update 10 neighbours until 10% remain.
 // Boost.Heap's mutable heaps allocate a node per push (a std::list node for
-// d_ary_heap, a tree node for pairing/fibonacci) and took 3.2-4.3x the CPU
+// d_ary_heap, a tree node for pairing/fibonacci) and took 4.0-5.3x the CPU
 // time; CGAL's default mutable_queue (a binary heap of keys that reads the
 // priority through its comparator, no allocation per operation) was the
-// closest at 2.4x. Own code won clearly, so own code it is (figures and
+// closest at 2.9x. Own code won clearly, so own code it is (figures and
 // command in docs/benchmarks.md, "Mutable priority queue").
 #pragma once
 
