@@ -1,7 +1,24 @@
-// The shared layer under every algorithm: the mutable priority queue.
+// The shared layer under every algorithm: the mutable priority queue,
+// scratch properties on every backend, the typed dynamic properties of
+// genmesh's meshes, the LocalOperations concept.
+#include "backends.h"
+
+#include <genmesh/adaptors/openmesh.h>
+#include <genmesh/generators.h>
+#include <genmesh/local_operations.h>
 #include <genmesh/priority_queue.h>
+#include <genmesh/properties.h>
+#include <genmesh/soup_to_mesh.h>
+
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polyhedron_items_with_id_3.h>
+
+#include <boost/property_map/property_map.hpp>
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <type_traits>
 
 #include <cstddef>
 #include <functional>
@@ -183,6 +200,443 @@ TEST(PriorityQueue, NoReallocationAfterReserve) {
   q.update(0, -1.0);  // make sure the front entry exists
   EXPECT_EQ(&q.priority(q.top()), first);  // heap_ storage never moved
   EXPECT_EQ(q.key_bound(), bound);
+}
+
+
+// ---------------------------------------------------------------------------
+// Scratch properties on every backend
+
+template <class G>
+class ScratchProperty : public ::testing::Test {};
+TYPED_TEST_SUITE(ScratchProperty, genmesh_test::Backends);
+
+template <class G>
+G make_mesh(const genmesh::Polygon_soup& soup) {
+  G g;
+  genmesh::build_mesh(soup, g);
+  return g;
+}
+
+// Writes f(index) to every element of a range, reads it back, and checks
+// get/put and the boost lvalue property map concept.
+template <class Tag, class G, class Range>
+void check_write_read(G& g, const Range& range) {
+  auto m = genmesh::scratch_property<long>(Tag{}, g, -7L);
+  using Map = decltype(m);
+  using Key = typename boost::property_traits<Map>::key_type;
+  BOOST_CONCEPT_ASSERT((boost::LvaluePropertyMapConcept<Map, Key>));
+  static_assert(std::is_same_v<decltype(m[std::declval<Key>()]), long&>);
+  const auto idx = get(Tag{}, std::as_const(g));
+  std::size_t n = 0;
+  for (auto d : range) {
+    EXPECT_EQ(m[d], -7L);
+    put(m, d, static_cast<long>(get(idx, d)) * 3);
+    ++n;
+  }
+  ASSERT_GT(n, 0u);
+  const auto copy = m;  // copies share the storage
+  for (auto d : range) {
+    EXPECT_EQ(get(copy, d), static_cast<long>(get(idx, d)) * 3);
+    get(copy, d) += 1;
+    EXPECT_EQ(m[d], static_cast<long>(get(idx, d)) * 3 + 1);
+  }
+}
+
+TYPED_TEST(ScratchProperty, EveryElementKindWritesAndReads) {
+  TypeParam g = make_mesh<TypeParam>(genmesh::make_icosphere(1));
+  check_write_read<genmesh::vertex_index_t>(g, vertices(g));
+  check_write_read<genmesh::halfedge_index_t>(g, halfedges(g));
+  check_write_read<genmesh::edge_index_t>(g, edges(g));
+  check_write_read<genmesh::face_index_t>(g, faces(g));
+  // On a const graph too (the generic storage).
+  const TypeParam& cg = g;
+  check_write_read<genmesh::vertex_index_t>(cg, vertices(cg));
+  check_write_read<genmesh::face_index_t>(cg, faces(cg));
+}
+
+TYPED_TEST(ScratchProperty, BoolIsAnLvalue) {
+  TypeParam g = make_mesh<TypeParam>(genmesh::make_cube());
+  auto mark = genmesh::scratch_property<bool>(genmesh::face_index, g);
+  static_assert(std::is_same_v<decltype(mark[*faces(g).begin()]), bool&>);
+  bool& b = mark[*faces(g).begin()];
+  b = true;
+  std::size_t marked = 0;
+  for (auto f : faces(g)) marked += get(mark, f) ? 1 : 0;
+  EXPECT_EQ(marked, 1u);
+}
+
+// Elements added after the map was made: split every edge and triangulate,
+// then the new vertices, halfedges, edges and faces read init and keep what
+// is written, and the old ones keep their values.
+template <class Tag, class G>
+void check_growth(G& g) {
+  const auto idx = get(Tag{}, std::as_const(g));
+  auto m = genmesh::scratch_property<int>(Tag{}, g, 5);
+  auto m_const = genmesh::scratch_property<int>(Tag{}, std::as_const(g), 5);  // generic on every backend
+  auto range = [&] {
+    if constexpr (std::is_same_v<Tag, genmesh::vertex_index_t>) return vertices(g);
+    else if constexpr (std::is_same_v<Tag, genmesh::halfedge_index_t>) return halfedges(g);
+    else if constexpr (std::is_same_v<Tag, genmesh::edge_index_t>) return edges(g);
+    else return faces(g);
+  };
+  std::size_t before = 0;
+  for (auto d : range()) {
+    m[d] = static_cast<int>(get(idx, d));
+    m_const[d] = static_cast<int>(get(idx, d)) + 1;
+    ++before;
+  }
+  const std::size_t bound_before = index_bound(Tag{}, g);
+  std::vector<genmesh::halfedge_descriptor_t<G>> hs;
+  for (auto e : edges(g)) hs.push_back(halfedge(e, g));
+  for (auto h : hs) ASSERT_TRUE(genmesh::split_edge_and_triangulate(h, g));
+  ASSERT_GT(index_bound(Tag{}, g), bound_before);
+  std::size_t fresh = 0, after = 0;
+  for (auto d : range()) {
+    ++after;
+    if (get(idx, d) >= bound_before) {
+      ++fresh;
+      EXPECT_EQ(m[d], 5);
+      EXPECT_EQ(m_const[d], 5);
+      m[d] = -static_cast<int>(get(idx, d));
+      m_const[d] = -static_cast<int>(get(idx, d)) - 1;
+    }
+  }
+  EXPECT_EQ(fresh, after - before);
+  ASSERT_GT(fresh, 0u);
+  for (auto d : range()) {
+    const int i = static_cast<int>(get(idx, d));
+    if (get(idx, d) >= bound_before) {
+      EXPECT_EQ(get(m, d), -i);
+      EXPECT_EQ(get(m_const, d), -i - 1);
+    } else {
+      EXPECT_EQ(get(m, d), i);
+      EXPECT_EQ(get(m_const, d), i + 1);
+    }
+  }
+}
+
+TYPED_TEST(ScratchProperty, GrowsWithElementsAddedAfterCreation) {
+  {
+    TypeParam g = make_mesh<TypeParam>(genmesh::make_icosphere(1));
+    check_growth<genmesh::vertex_index_t>(g);
+  }
+  {
+    TypeParam g = make_mesh<TypeParam>(genmesh::make_icosphere(1));
+    check_growth<genmesh::halfedge_index_t>(g);
+  }
+  {
+    TypeParam g = make_mesh<TypeParam>(genmesh::make_icosphere(1));
+    check_growth<genmesh::edge_index_t>(g);
+  }
+  {
+    TypeParam g = make_mesh<TypeParam>(genmesh::make_icosphere(1));
+    check_growth<genmesh::face_index_t>(g);
+  }
+}
+
+// Natives where the backend's property system grows with the mesh; the
+// generic storage elsewhere and on const graphs.
+static_assert(genmesh::HasNativeScratchProperty<genmesh_test::Halfedge_mesh, genmesh::vertex_index_t, int>);
+static_assert(genmesh::HasNativeScratchProperty<genmesh_test::Incidence_mesh, genmesh::face_index_t, bool>);
+static_assert(genmesh::HasNativeScratchProperty<genmesh_test::Surface_mesh, genmesh::edge_index_t, double>);
+static_assert(genmesh::HasNativeScratchProperty<genmesh_test::Surface_mesh, genmesh::halfedge_index_t, bool>);
+static_assert(!genmesh::HasNativeScratchProperty<const genmesh_test::Halfedge_mesh, genmesh::vertex_index_t, int>);
+static_assert(std::is_same_v<decltype(genmesh::scratch_property<int>(genmesh::vertex_index,
+                                                                      std::declval<const genmesh_test::Surface_mesh&>())),
+                             genmesh::Scratch_property<int, genmesh::vertex_index_t, genmesh_test::Surface_mesh>>);
+
+// A native scratch property lives in the mesh while a copy of it lives, and
+// is gone (its memory too) after the last copy.
+TYPED_TEST(ScratchProperty, NativeStorageIsReleasedWithTheLastCopy) {
+  TypeParam g = make_mesh<TypeParam>(genmesh::make_icosphere(2));
+  const auto count = [&] {
+    if constexpr (std::is_same_v<TypeParam, genmesh_test::Surface_mesh>)
+      return g.template properties<typename TypeParam::Vertex_index>().size();
+    else
+      return g.memory_bytes();
+  };
+  const auto base = count();
+  {
+    auto m = genmesh::scratch_property<double>(genmesh::vertex_index, g, 1.0);
+    auto copy = m;
+    {
+      auto inner = copy;
+      EXPECT_GT(count(), base);
+    }
+    EXPECT_GT(count(), base);
+    m = {};
+    EXPECT_GT(count(), base);  // copy still holds it
+  }
+  EXPECT_EQ(count(), base);
+}
+
+// After collect_garbage the native properties follow their elements.
+TYPED_TEST(ScratchProperty, NativeValuesFollowGarbageCollection) {
+  TypeParam g = make_mesh<TypeParam>(genmesh::make_icosphere(1));
+  auto tag = genmesh::vertex_index;
+  auto m = genmesh::scratch_property<int>(tag, g, -1);
+  auto pm = get(genmesh::vertex_point, g);
+  using P = genmesh::point_t<TypeParam>;
+  // Remember each vertex's point in the map (as an id), remove faces around
+  // one vertex, collect: every surviving vertex still maps to its id.
+  std::vector<Eigen::Vector3d> pts;
+  for (auto v : vertices(g)) {
+    m[v] = static_cast<int>(pts.size());
+    pts.push_back(genmesh::to_eigen(P(get(pm, v))));
+  }
+  const auto v0 = *vertices(g).begin();
+  ASSERT_TRUE(genmesh::collapse_edge(edge(halfedge(v0, g), g), g));
+  g.collect_garbage();
+  std::size_t n = 0;
+  for (auto v : vertices(g)) {
+    ASSERT_GE(m[v], 0);
+    EXPECT_EQ(genmesh::to_eigen(P(get(pm, v))), pts[static_cast<std::size_t>(m[v])]);
+    ++n;
+  }
+  EXPECT_EQ(n, pts.size() - 1);
+}
+
+// ---------------------------------------------------------------------------
+// Typed dynamic properties: the same API and behaviour on both genmesh meshes
+
+template <class G>
+class MeshProperties : public ::testing::Test {};
+using Genmesh_meshes = ::testing::Types<genmesh_test::Halfedge_mesh, genmesh_test::Incidence_mesh>;
+TYPED_TEST_SUITE(MeshProperties, Genmesh_meshes);
+
+TYPED_TEST(MeshProperties, AddFindRemoveScoped) {
+  using genmesh::Edge_index;
+  using genmesh::Vertex_index;
+  TypeParam g = make_mesh<TypeParam>(genmesh::make_cube());
+  auto w = g.template add_edge_property<double>("e:weight", 1.5);
+  for (auto e : edges(g)) EXPECT_EQ(w[e], 1.5);
+  w[Edge_index(3)] = 4.0;
+  EXPECT_THROW(g.template add_edge_property<double>("e:weight"), genmesh::invalid_input);
+  auto found = g.template get_edge_property<double>("e:weight");
+  ASSERT_TRUE(found);
+  EXPECT_EQ((*found)[Edge_index(3)], 4.0);
+  EXPECT_FALSE(g.template get_edge_property<int>("e:weight"));  // wrong type
+  EXPECT_FALSE(g.template get_vertex_property<double>("e:weight"));  // wrong kind
+  EXPECT_TRUE(g.has_edge_property("e:weight"));
+  EXPECT_EQ((g.template property<Edge_index, double>("e:weight")[Edge_index(3)]), 4.0);  // find-or-add finds
+  auto names = g.template property_names<Edge_index>();
+  EXPECT_NE(std::find(names.begin(), names.end(), "e:weight"), names.end());
+  EXPECT_TRUE(g.remove_edge_property(w));
+  EXPECT_FALSE(w);
+  EXPECT_FALSE(g.has_edge_property("e:weight"));
+  EXPECT_FALSE(g.remove_edge_property(w));
+  const auto bytes = g.memory_bytes();
+  {
+    genmesh::Scoped_vertex_property<int> s(g, 3);
+    EXPECT_GT(g.memory_bytes(), bytes);
+    EXPECT_EQ(s[Vertex_index(0)], 3);
+    put(s, Vertex_index(1), 9);
+    EXPECT_EQ(get(s, Vertex_index(1)), 9);
+    genmesh::Shared_property<genmesh::Face_index, bool> shared(g);
+    auto copy = shared;
+    copy[genmesh::Face_index(0)] = true;
+    EXPECT_TRUE(shared[genmesh::Face_index(0)]);
+  }
+  EXPECT_EQ(g.memory_bytes(), bytes);
+  // Copies of the mesh copy the properties (found by name in the copy).
+  auto id = g.template add_vertex_property<int>("v:id", -1);
+  for (auto v : vertices(g)) id[v] = static_cast<int>(v.idx());
+  const TypeParam copy = g;
+  auto cid = copy.template get_vertex_property<int>("v:id");
+  ASSERT_TRUE(cid);
+  for (auto v : vertices(copy)) EXPECT_EQ((*cid)[v], static_cast<int>(v.idx()));
+}
+
+// Properties follow the elements: added and recycled elements get the
+// default; collect_garbage moves values with their elements; both meshes
+// (same allocation semantics) agree element for element.
+TYPED_TEST(MeshProperties, FollowAddRemoveAndGarbageCollection) {
+  using genmesh::Edge_index;
+  using genmesh::Face_index;
+  using genmesh::Halfedge_index;
+  using genmesh::Vertex_index;
+  TypeParam g = make_mesh<TypeParam>(genmesh::make_icosphere(1));
+  auto vid = g.template add_vertex_property<int>("v:id", -1);
+  auto hid = g.template add_halfedge_property<int>("h:id", -1);
+  auto eid = g.template add_edge_property<int>("e:id", -1);
+  auto fid = g.template add_face_property<int>("f:id", -1);
+  for (auto v : vertices(g)) vid[v] = static_cast<int>(v.idx());
+  for (auto h : halfedges(g)) hid[h] = static_cast<int>(h.idx());
+  for (auto e : edges(g)) eid[e] = static_cast<int>(e.idx());
+  for (auto f : faces(g)) fid[f] = static_cast<int>(f.idx());
+  // Collapse three edges (removes vertices, edges, faces), then split one:
+  // the split recycles removed slots, which must read the defaults.
+  for (std::uint32_t e : {0u, 17u, 40u}) {
+    if (genmesh::can_collapse_edge(Edge_index(e), g)) {
+      ASSERT_TRUE(genmesh::collapse_edge(Edge_index(e), g));
+    }
+  }
+  ASSERT_TRUE(g.has_garbage());
+  const auto hnew = genmesh::split_edge_and_triangulate(halfedge(Edge_index(5), g), g);
+  ASSERT_TRUE(hnew);
+  const Vertex_index vnew = target(*hnew, g);
+  EXPECT_EQ(vid[vnew], -1);
+  std::size_t defaults = 0;
+  for (auto e : edges(g)) defaults += eid[e] == -1 ? 1 : 0;
+  EXPECT_EQ(defaults, 3u);  // split_edge_and_triangulate adds three edges
+  for (auto h : halfedges(g)) EXPECT_TRUE(hid[h] == -1 || hid[h] == static_cast<int>(h.idx()));
+  std::size_t new_faces = 0;
+  for (auto f : faces(g)) new_faces += fid[f] == -1 ? 1 : 0;
+  EXPECT_EQ(new_faces, 2u);
+  // Before collecting, every live element with an id has it at its index.
+  std::vector<int> old_v(index_bound(genmesh::vertex_index, g)), old_e(index_bound(genmesh::edge_index, g)),
+      old_f(index_bound(genmesh::face_index, g)), old_h(index_bound(genmesh::halfedge_index, g));
+  for (auto v : vertices(g)) old_v[v.idx()] = vid[v];
+  for (auto h : halfedges(g)) old_h[h.idx()] = hid[h];
+  for (auto e : edges(g)) old_e[e.idx()] = eid[e];
+  for (auto f : faces(g)) old_f[f.idx()] = fid[f];
+  const auto maps = g.collect_garbage();
+  EXPECT_FALSE(g.has_garbage());
+  for (std::size_t i = 0; i < maps.vertices.size(); ++i)
+    if (maps.vertices[i].is_valid()) {
+      EXPECT_EQ(vid[maps.vertices[i]], old_v[i]);
+    }
+  for (std::size_t i = 0; i < maps.halfedges.size(); ++i)
+    if (maps.halfedges[i].is_valid()) {
+      EXPECT_EQ(hid[maps.halfedges[i]], old_h[i]);
+    }
+  for (std::size_t i = 0; i < maps.edges.size(); ++i)
+    if (maps.edges[i].is_valid()) {
+      EXPECT_EQ(eid[maps.edges[i]], old_e[i]);
+    }
+  for (std::size_t i = 0; i < maps.faces.size(); ++i)
+    if (maps.faces[i].is_valid()) {
+      EXPECT_EQ(fid[maps.faces[i]], old_f[i]);
+    }
+  EXPECT_EQ(index_bound(genmesh::vertex_index, g), num_vertices(g));
+  // New elements after collection get the default.
+  const Vertex_index v = g.add_vertex();
+  EXPECT_EQ(vid[v], -1);
+}
+
+// Both meshes, the same operations: the same property values everywhere.
+TEST(MeshProperties, HalfedgeAndIncidenceMeshesAgree) {
+  auto run = [](auto g) {
+    auto vid = g.template add_vertex_property<int>("v:id", -1);
+    auto eid = g.template add_edge_property<int>("e:id", -1);
+    for (auto v : vertices(g)) vid[v] = static_cast<int>(v.idx()) * 10;
+    for (auto e : edges(g)) eid[e] = static_cast<int>(e.idx()) * 10;
+    for (std::uint32_t e : {2u, 30u, 61u})
+      if (genmesh::can_collapse_edge(genmesh::Edge_index(e), g)) (void)genmesh::collapse_edge(genmesh::Edge_index(e), g);
+    (void)genmesh::split_edge(halfedge(genmesh::Edge_index(7), g), g);
+    g.collect_garbage();
+    std::vector<int> out;
+    for (auto v : vertices(g)) out.push_back(vid[v]);
+    for (auto e : edges(g)) out.push_back(eid[e]);
+    return out;
+  };
+  const auto a = run(make_mesh<genmesh_test::Halfedge_mesh>(genmesh::make_icosphere(1)));
+  const auto b = run(make_mesh<genmesh_test::Incidence_mesh>(genmesh::make_icosphere(1)));
+  EXPECT_EQ(a, b);
+  EXPECT_NE(std::count(a.begin(), a.end(), -1), 0);  // the split's new elements
+}
+
+// load_soup replaces the mesh: the properties stay registered, every value
+// back to its default, sized to the new elements.
+TEST(MeshProperties, IncidenceLoadSoupResetsValues) {
+  genmesh_test::Incidence_mesh g = make_mesh<genmesh_test::Incidence_mesh>(genmesh::make_cube());
+  auto w = g.add_face_property<int>("f:w", 7);
+  for (auto f : faces(g)) w[f] = 1;
+  g.load_soup(genmesh::make_icosphere(1));
+  ASSERT_TRUE(g.get_face_property<int>("f:w"));
+  std::size_t n = 0;
+  for (auto f : faces(g)) {
+    EXPECT_EQ(w[f], 7);
+    ++n;
+  }
+  EXPECT_EQ(n, 80u);
+}
+
+
+// ---------------------------------------------------------------------------
+// The LocalOperations concept
+
+using Polyhedron = CGAL::Polyhedron_3<genmesh_test::Kernel>;
+using Polyhedron_with_ids = CGAL::Polyhedron_3<genmesh_test::Kernel, CGAL::Polyhedron_items_with_id_3>;
+using Om_poly = OpenMesh::PolyMesh_ArrayKernelT<>;
+using Om_tri = OpenMesh::TriMesh_ArrayKernelT<>;
+
+// What algorithms call: every expression of the concept's table through the
+// customization point objects themselves. Checked on every model, so the
+// concept's rule (generic path or every native hook) and the objects'
+// dispatch cannot drift apart.
+template <class G>
+concept Cpo_local_operations =
+    requires(G& g, const G& cg, genmesh::halfedge_descriptor_t<G> h, genmesh::edge_descriptor_t<G> e,
+             genmesh::face_descriptor_t<G> f, const std::vector<genmesh::vertex_descriptor_t<G>>& vs) {
+      { genmesh::can_flip_edge(h, cg) } -> std::convertible_to<bool>;
+      { genmesh::flip_edge(h, g) } -> std::same_as<std::optional<genmesh::halfedge_descriptor_t<G>>>;
+      { genmesh::can_split_edge(h, cg) } -> std::convertible_to<bool>;
+      { genmesh::split_edge(h, g) } -> std::same_as<std::optional<genmesh::halfedge_descriptor_t<G>>>;
+      { genmesh::can_split_edge_and_triangulate(h, cg) } -> std::convertible_to<bool>;
+      { genmesh::split_edge_and_triangulate(h, g) } -> std::same_as<std::optional<genmesh::halfedge_descriptor_t<G>>>;
+      { genmesh::does_satisfy_link_condition(e, cg) } -> std::convertible_to<bool>;
+      { genmesh::can_collapse_edge(e, cg) } -> std::convertible_to<bool>;
+      { genmesh::collapse_edge(e, g) } -> std::same_as<std::optional<genmesh::vertex_descriptor_t<G>>>;
+      { genmesh::can_split_face(h, h, cg) } -> std::convertible_to<bool>;
+      { genmesh::split_face(h, h, g) } -> std::same_as<std::optional<genmesh::halfedge_descriptor_t<G>>>;
+      { genmesh::can_join_face(h, cg) } -> std::convertible_to<bool>;
+      { genmesh::join_face(h, g) } -> std::same_as<std::optional<genmesh::halfedge_descriptor_t<G>>>;
+      { genmesh::can_add_center_vertex(h, cg) } -> std::convertible_to<bool>;
+      { genmesh::add_center_vertex(h, g) } -> std::same_as<std::optional<genmesh::halfedge_descriptor_t<G>>>;
+      { genmesh::can_triangulate_face(f, cg) } -> std::convertible_to<bool>;
+      { genmesh::triangulate_face(f, g) } -> std::convertible_to<bool>;
+      { genmesh::euler::can_add_face(vs, cg) } -> std::convertible_to<bool>;
+      { genmesh::euler::add_face(vs, g) } -> std::same_as<std::optional<genmesh::face_descriptor_t<G>>>;
+      { genmesh::euler::can_remove_face(h, cg) } -> std::convertible_to<bool>;
+      { genmesh::euler::remove_face(h, g) } -> std::convertible_to<bool>;
+      { genmesh::flip_edge(h, g, std::declval<genmesh::Mutation_visitor&>()) };
+      { genmesh::collapse_edge(e, g, std::declval<genmesh::Mutation_visitor&>()) };
+    };
+
+template <class G>
+constexpr bool models_local_operations() {
+  static_assert(genmesh::LocalOperations<G>);
+  static_assert(Cpo_local_operations<G>);
+  return true;
+}
+static_assert(models_local_operations<genmesh_test::Halfedge_mesh>());
+static_assert(models_local_operations<genmesh_test::Surface_mesh>());
+static_assert(models_local_operations<genmesh_test::Incidence_mesh>());
+static_assert(models_local_operations<Polyhedron_with_ids>());
+static_assert(models_local_operations<Om_poly>());
+static_assert(models_local_operations<Om_tri>());
+// Incidence_mesh qualifies by its native operations alone (it has no set_next).
+static_assert(!genmesh::MutableFaceGraph<genmesh_test::Incidence_mesh>);
+static_assert(genmesh::NativeLocalOperations<genmesh_test::Incidence_mesh>);
+static_assert(!genmesh::NativeLocalOperations<genmesh_test::Halfedge_mesh>);
+// Must not qualify: a const mesh (nothing can change it); a Polyhedron_3
+// without ids (a MutableFaceGraph, but triangulate_face needs a vertex
+// index map, which it lacks) — and there the objects refuse that call too.
+static_assert(!genmesh::LocalOperations<const genmesh_test::Halfedge_mesh>);
+static_assert(!genmesh::LocalOperations<const genmesh_test::Incidence_mesh>);
+static_assert(genmesh::MutableFaceGraph<Polyhedron> && !genmesh::LocalOperations<Polyhedron>);
+static_assert(!Cpo_local_operations<Polyhedron>);
+static_assert(!Cpo_local_operations<const genmesh_test::Halfedge_mesh>);
+
+// The scratch property on the adaptors' meshes (the generic storage):
+// Polyhedron_3 with ids and OpenMesh, elements added after creation included.
+TEST(ScratchPropertyAdaptors, OpenMeshAndPolyhedronWithIds) {
+  auto run = [](auto g) {
+    genmesh::build_mesh(genmesh::make_icosphere(1), g);
+    auto m = genmesh::scratch_property<int>(genmesh::vertex_index, g, 4);
+    static_assert(!genmesh::HasNativeScratchProperty<decltype(g), genmesh::vertex_index_t, int>);
+    for (auto v : vertices(g)) m[v] = 1;
+    std::vector<genmesh::halfedge_descriptor_t<decltype(g)>> hs;
+    for (auto e : edges(g)) hs.push_back(halfedge(e, g));
+    for (auto h : hs) EXPECT_TRUE(genmesh::split_edge(h, g));
+    std::size_t ones = 0, fours = 0;
+    for (auto v : vertices(g)) (m[v] == 1 ? ones : fours) += 1;
+    EXPECT_EQ(ones, 42u);
+    EXPECT_EQ(fours, 120u);
+  };
+  run(Om_poly{});
+  run(Polyhedron_with_ids{});
 }
 
 } // namespace

@@ -48,6 +48,7 @@
 #include <genmesh/concepts.h>
 #include <genmesh/detail/property_array.h>
 #include <genmesh/exceptions.h>
+#include <genmesh/mesh_properties.h>
 #include <genmesh/point_traits.h>
 #include <genmesh/property_maps.h>
 
@@ -246,6 +247,18 @@ inline std::vector<std::uint32_t> compaction_map(const std::vector<bool>& remove
     r[i1] = true;
   }
   return map;
+}
+
+/// The halfedge map of an edge compaction map: halfedges 2e and 2e + 1 go
+/// with their edge e.
+inline std::vector<std::uint32_t> halfedge_compaction_map(const std::vector<std::uint32_t>& emap) {
+  constexpr std::uint32_t null = Vertex_index::invalid_value;
+  std::vector<std::uint32_t> hmap(2 * emap.size());
+  for (std::size_t e = 0; e < emap.size(); ++e) {
+    hmap[2 * e] = emap[e] == null ? null : 2 * emap[e];
+    hmap[2 * e + 1] = emap[e] == null ? null : 2 * emap[e] + 1;
+  }
+  return hmap;
 }
 
 } // namespace detail
@@ -606,18 +619,9 @@ using Out_edge_iterator = detail::Cycle_iterator<detail::Step_target_out_edge>;
 
 /// The connectivity and properties of a Halfedge_mesh; the point type is added
 /// by Halfedge_mesh<Point>. Not used on its own.
-class Halfedge_connectivity {
+class Halfedge_connectivity : public Mesh_properties<Vertex_index, Halfedge_index, Edge_index, Face_index> {
 public:
   using size_type = std::size_t;
-
-  template <class T>
-  using Vertex_property = genmesh::Vertex_property<T>;
-  template <class T>
-  using Halfedge_property = genmesh::Halfedge_property<T>;
-  template <class T>
-  using Edge_property = genmesh::Edge_property<T>;
-  template <class T>
-  using Face_property = genmesh::Face_property<T>;
 
   static constexpr Vertex_index null_vertex() { return {}; }
   static constexpr Halfedge_index null_halfedge() { return {}; }
@@ -870,18 +874,14 @@ public:
     const std::uint32_t nv = static_cast<std::uint32_t>(vertices_size());
     const std::uint32_t ne = static_cast<std::uint32_t>(edges_size());
     const std::uint32_t nf = static_cast<std::uint32_t>(faces_size());
-    std::vector<std::uint32_t> hmap(2 * std::size_t(ne));
     const std::vector<std::uint32_t> vmap = detail::compaction_map(vremoved_, order);
     const std::vector<std::uint32_t> emap = detail::compaction_map(eremoved_, order);
     const std::vector<std::uint32_t> fmap = detail::compaction_map(fremoved_, order);
+    const std::vector<std::uint32_t> hmap = detail::halfedge_compaction_map(emap);
     auto kept = [](const std::vector<std::uint32_t>& map) {
       return static_cast<std::uint32_t>(std::ranges::count_if(map, [](std::uint32_t i) { return i != invalid; }));
     };
     const std::uint32_t kv = kept(vmap), ke = kept(emap), kf = kept(fmap);
-    for (std::uint32_t i = 0; i < ne; ++i) {
-      hmap[2 * i] = emap[i] == invalid ? invalid : 2 * emap[i];
-      hmap[2 * i + 1] = emap[i] == invalid ? invalid : 2 * emap[i] + 1;
-    }
 
     if (garbage_) {
       auto map_h = [&](Halfedge_index h) {
@@ -1038,118 +1038,6 @@ public:
     return {{this, halfedge(v), 0}, {this, halfedge(v), 1}};
   }
 
-  // ---- properties ---------------------------------------------------------
-
-  /// Adds a property of element Key (Vertex_index, Halfedge_index, Edge_index
-  /// or Face_index) and value T, every element set to default_value. An empty
-  /// name makes it anonymous. Throws invalid_input if the name is taken.
-  template <class Key, class T>
-  detail::Property_map<Key, T> add_property(std::string name, T default_value = T()) {
-    auto m = container<Key>().add(name, std::move(default_value));
-    if (!m) throw invalid_input("Halfedge_mesh: property \"" + name + "\" already exists");
-    return m;
-  }
-  /// The property of that name and type, if any.
-  template <class Key, class T>
-  [[nodiscard]] std::optional<detail::Property_map<Key, T>> get_property(std::string_view name) const {
-    return container<Key>().template get<T>(name);
-  }
-  /// The property of that name and type, added with default_value if missing.
-  /// Throws invalid_input if the name is taken by another value type.
-  template <class Key, class T>
-  detail::Property_map<Key, T> property(std::string name, T default_value = T()) {
-    if (auto m = get_property<Key, T>(name)) return *m;
-    return add_property<Key, T>(std::move(name), std::move(default_value));
-  }
-  template <class Key>
-  [[nodiscard]] bool has_property(std::string_view name) const {
-    return container<Key>().exists(name);
-  }
-  /// Removes the property and nulls the handle; false if it was not here.
-  template <class Key, class T>
-  bool remove_property(detail::Property_map<Key, T>& m) {
-    if (!m) return false;
-    if constexpr (std::is_same_v<Key, Vertex_index>)
-      if (m.name() == "v:point") return false; // the positions stay
-    return container<Key>().remove(m);
-  }
-  template <class Key>
-  [[nodiscard]] std::vector<std::string> property_names() const {
-    return container<Key>().names();
-  }
-
-  // pmp-style spellings.
-  template <class T>
-  Vertex_property<T> add_vertex_property(std::string name, T def = T()) {
-    return add_property<Vertex_index, T>(std::move(name), std::move(def));
-  }
-  template <class T>
-  Halfedge_property<T> add_halfedge_property(std::string name, T def = T()) {
-    return add_property<Halfedge_index, T>(std::move(name), std::move(def));
-  }
-  template <class T>
-  Edge_property<T> add_edge_property(std::string name, T def = T()) {
-    return add_property<Edge_index, T>(std::move(name), std::move(def));
-  }
-  template <class T>
-  Face_property<T> add_face_property(std::string name, T def = T()) {
-    return add_property<Face_index, T>(std::move(name), std::move(def));
-  }
-  template <class T>
-  [[nodiscard]] std::optional<Vertex_property<T>> get_vertex_property(std::string_view name) const {
-    return get_property<Vertex_index, T>(name);
-  }
-  template <class T>
-  [[nodiscard]] std::optional<Halfedge_property<T>> get_halfedge_property(std::string_view name) const {
-    return get_property<Halfedge_index, T>(name);
-  }
-  template <class T>
-  [[nodiscard]] std::optional<Edge_property<T>> get_edge_property(std::string_view name) const {
-    return get_property<Edge_index, T>(name);
-  }
-  template <class T>
-  [[nodiscard]] std::optional<Face_property<T>> get_face_property(std::string_view name) const {
-    return get_property<Face_index, T>(name);
-  }
-  template <class T>
-  Vertex_property<T> vertex_property(std::string name, T def = T()) {
-    return property<Vertex_index, T>(std::move(name), std::move(def));
-  }
-  template <class T>
-  Halfedge_property<T> halfedge_property(std::string name, T def = T()) {
-    return property<Halfedge_index, T>(std::move(name), std::move(def));
-  }
-  template <class T>
-  Edge_property<T> edge_property(std::string name, T def = T()) {
-    return property<Edge_index, T>(std::move(name), std::move(def));
-  }
-  template <class T>
-  Face_property<T> face_property(std::string name, T def = T()) {
-    return property<Face_index, T>(std::move(name), std::move(def));
-  }
-  [[nodiscard]] bool has_vertex_property(std::string_view name) const { return has_property<Vertex_index>(name); }
-  [[nodiscard]] bool has_halfedge_property(std::string_view name) const {
-    return has_property<Halfedge_index>(name);
-  }
-  [[nodiscard]] bool has_edge_property(std::string_view name) const { return has_property<Edge_index>(name); }
-  [[nodiscard]] bool has_face_property(std::string_view name) const { return has_property<Face_index>(name); }
-  template <class T>
-  bool remove_vertex_property(Vertex_property<T>& m) {
-    return remove_property(m);
-  }
-  template <class T>
-  bool remove_halfedge_property(Halfedge_property<T>& m) {
-    return remove_property(m);
-  }
-  template <class T>
-  bool remove_edge_property(Edge_property<T>& m) {
-    return remove_property(m);
-  }
-  template <class T>
-  bool remove_face_property(Face_property<T>& m) {
-    return remove_property(m);
-  }
-
 protected:
   static constexpr std::uint32_t invalid = Vertex_index::invalid_value;
 
@@ -1158,24 +1046,6 @@ protected:
   /// Back to empty, every property removed (the derived mesh re-adds points).
   void clear_connectivity() {
     *this = Halfedge_connectivity();
-  }
-
-  template <class Key>
-  detail::Property_container<Key>& container() {
-    if constexpr (std::is_same_v<Key, Vertex_index>)
-      return vprops_;
-    else if constexpr (std::is_same_v<Key, Halfedge_index>)
-      return hprops_;
-    else if constexpr (std::is_same_v<Key, Edge_index>)
-      return eprops_;
-    else {
-      static_assert(std::is_same_v<Key, Face_index>, "Key must be a Halfedge_mesh index type");
-      return fprops_;
-    }
-  }
-  template <class Key>
-  const detail::Property_container<Key>& container() const {
-    return const_cast<Halfedge_connectivity*>(this)->container<Key>();
   }
 
   friend struct detail::Halfedge_mesh_bulk; // bulk growth (detail/halfedge_mesh_bulk.h)
@@ -1226,10 +1096,6 @@ protected:
   std::vector<Halfedge_index> vhalfedge_;
   std::vector<Halfedge_index> fhalfedge_;
   std::vector<bool> vremoved_, eremoved_, fremoved_;
-  detail::Property_container<Vertex_index> vprops_;
-  detail::Property_container<Halfedge_index> hprops_;
-  detail::Property_container<Edge_index> eprops_;
-  detail::Property_container<Face_index> fprops_;
   std::size_t removed_vertices_ = 0, removed_edges_ = 0, removed_faces_ = 0;
   std::uint32_t vertices_freelist_ = invalid, edges_freelist_ = invalid, faces_freelist_ = invalid;
   bool garbage_ = false;
@@ -1327,42 +1193,6 @@ struct Index_map : boost::put_get_helper<std::size_t, Index_map<Key>> {
 // ---------------------------------------------------------------------------
 // Scoped (RAII) properties
 // ---------------------------------------------------------------------------
-
-/// An anonymous property that is removed when this object is destroyed.
-/// Move-only; map() is a copyable handle to pass to algorithms (valid while
-/// this object lives).
-template <class Key, class T>
-class Scoped_property {
-public:
-  Scoped_property(Halfedge_connectivity& m, T default_value = T())
-      : mesh_(&m), map_(m.add_property<Key, T>("", std::move(default_value))) {}
-  Scoped_property(const Scoped_property&) = delete;
-  Scoped_property& operator=(const Scoped_property&) = delete;
-  Scoped_property(Scoped_property&& o) noexcept : mesh_(std::exchange(o.mesh_, nullptr)), map_(o.map_) {}
-  Scoped_property& operator=(Scoped_property&& o) noexcept {
-    if (this != &o) {
-      release();
-      mesh_ = std::exchange(o.mesh_, nullptr);
-      map_ = o.map_;
-    }
-    return *this;
-  }
-  ~Scoped_property() { release(); }
-
-  T& operator[](Key k) const { return map_[k]; }
-  [[nodiscard]] detail::Property_map<Key, T> map() const { return map_; }
-
-  friend T& get(const Scoped_property& s, Key k) { return s.map_[k]; }
-  friend void put(const Scoped_property& s, Key k, const T& v) { s.map_[k] = v; }
-
-private:
-  void release() {
-    if (mesh_ != nullptr) mesh_->remove_property(map_);
-    mesh_ = nullptr;
-  }
-  Halfedge_connectivity* mesh_;
-  detail::Property_map<Key, T> map_;
-};
 
 template <class T>
 using Scoped_vertex_property = Scoped_property<Vertex_index, T>;

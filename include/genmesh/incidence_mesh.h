@@ -74,6 +74,7 @@
 #include <genmesh/concepts.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/halfedge_mesh.h>
+#include <genmesh/mesh_properties.h>
 #include <genmesh/point_traits.h>
 #include <genmesh/polygon_soup.h>
 #include <genmesh/property_maps.h>
@@ -510,7 +511,7 @@ inline std::string to_string(const Incidence_manifold_report& r) {
 
 /// genmesh's sparse-incidence mesh; see the top of this header.
 template <class P = Eigen::Vector3d>
-class Incidence_mesh {
+class Incidence_mesh : public Mesh_properties<Vertex_index, Halfedge_index, Edge_index, Face_index> {
 public:
   using Point = P;
   using size_type = std::size_t;
@@ -571,6 +572,7 @@ public:
         corner_sign[c] = ends[2 * it->second] == u ? 1 : -1;
       }
     }
+    for_each_container([](auto& c) { c.resize(0); }); // every property value back to its default
     assign_incidences(soup.points, ends, soup.offsets, corner_edge, corner_sign);
     update_manifold_flags_();
   }
@@ -825,6 +827,7 @@ public:
       points_[i] = p;
       d0t_.clear_row(i);
       border_edges_[i] = 0;
+      vprops_.reset(i);
       return Vertex_index(i);
     }
     const auto i = static_cast<std::uint32_t>(vremoved_.size());
@@ -832,6 +835,7 @@ public:
     vremoved_.push_back(false);
     points_.push_back(p);
     border_edges_.push_back(0);
+    vprops_.push_back();
     d0t_.reserve_shape(i + 1, 1);
     d0_.reserve_shape(1, i + 1);
     if (!manifold_) bad_vertex_.push_back(false);
@@ -856,6 +860,7 @@ public:
       fremoved_[i] = false;
       d1_.clear_row(i);
       touch_face_(i);
+      fprops_.reset(i);
       return Face_index(i);
     }
     const auto i = static_cast<std::uint32_t>(fremoved_.size());
@@ -863,6 +868,7 @@ public:
     fremoved_.push_back(false);
     face_state_.push_back(order_dirty_);
     dirty_.push_back(i);
+    fprops_.push_back();
     d1_.reserve_shape(i + 1, 1);
     d1t_.reserve_shape(1, i + 1);
     return Face_index(i);
@@ -1034,6 +1040,10 @@ public:
     d1t_.reserve_shape(ne, nf);
     d0_.reserve_entries(2 * ne);
     d0t_.reserve_entries(2 * ne);
+    vprops_.reserve(nv);
+    hprops_.reserve(2 * ne);
+    eprops_.reserve(ne);
+    fprops_.reserve(nf);
   }
 
   /// Back to an empty, manifold mesh with recycling on.
@@ -1046,7 +1056,7 @@ public:
            d1t_.memory_bytes() + bits(vremoved_) + bits(eremoved_) + bits(fremoved_) +
            (vfree_.capacity() + efree_.capacity() + ffree_.capacity()) * sizeof(std::uint32_t) +
            bits(bad_vertex_) + bits(bad_edge_) + face_state_.capacity() + turns_.capacity() * sizeof(std::uint16_t) +
-           (dirty_.capacity() + border_edges_.capacity()) * sizeof(std::uint32_t);
+           (dirty_.capacity() + border_edges_.capacity()) * sizeof(std::uint32_t) + properties_memory_bytes();
   }
 
   // ---- ranges -------------------------------------------------------------
@@ -1134,7 +1144,13 @@ public:
     m.turns_.assign(2 * ne, no_turn_);
     m.face_state_.assign(nf, order_dirty_);
     for (std::size_t f = 0; f < nf; ++f) m.record_face_order_(static_cast<std::uint32_t>(f));
+    // The properties stay (their handles too), sized to the new elements.
+    static_cast<Mesh_properties&>(m) = std::move(static_cast<Mesh_properties&>(*this));
     *this = std::move(m);
+    vprops_.resize(np);
+    hprops_.resize(2 * ne);
+    eprops_.resize(ne);
+    fprops_.resize(nf);
   }
 
 private:
@@ -1165,6 +1181,9 @@ private:
       d0_.clear_row(i);
       d1t_.clear_row(i);
       turns_[2 * std::size_t(i)] = turns_[2 * std::size_t(i) + 1] = no_turn_;
+      eprops_.reset(i);
+      hprops_.reset(2 * std::size_t(i));
+      hprops_.reset(2 * std::size_t(i) + 1);
       return Edge_index(i);
     }
     const auto i = static_cast<std::uint32_t>(eremoved_.size());
@@ -1172,6 +1191,9 @@ private:
     eremoved_.push_back(false);
     turns_.push_back(no_turn_);
     turns_.push_back(no_turn_);
+    eprops_.push_back();
+    hprops_.push_back();
+    hprops_.push_back();
     d0_.reserve_shape(i + 1, 1);
     d0t_.reserve_shape(1, i + 1);
     d1_.reserve_shape(1, i + 1);

@@ -77,6 +77,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -137,6 +138,49 @@ std::size_t index_bound(edge_index_t, const CGAL::Surface_mesh<P>& sm) {
 template <class P>
 std::size_t index_bound(face_index_t, const CGAL::Surface_mesh<P>& sm) {
   return sm.num_faces();
+}
+
+/// A scratch property of a Surface_mesh (genmesh::scratch_property,
+/// <genmesh/properties.h>): an anonymous Surface_mesh property, which grows
+/// and compacts with the mesh, removed with the last copy of this map. bool
+/// is stored one per byte (detail::Bool_box) so that operator[] is a bool&.
+template <class P, class Key, class T>
+class Surface_mesh_scratch_property
+    : public boost::put_get_helper<T&, Surface_mesh_scratch_property<P, Key, T>> {
+  using Stored = typename detail::Property_storage<T>::type;
+  using Map = typename CGAL::Surface_mesh<P>::template Property_map<Key, Stored>;
+  struct Owner {
+    CGAL::Surface_mesh<P>* mesh;
+    Map map;
+    Owner(CGAL::Surface_mesh<P>* m, Map p) : mesh(m), map(p) {}
+    Owner(const Owner&) = delete;
+    Owner& operator=(const Owner&) = delete;
+    ~Owner() { mesh->remove_property_map(map); }
+  };
+
+public:
+  using key_type = Key;
+  using value_type = T;
+  using reference = T&;
+  using category = boost::lvalue_property_map_tag;
+
+  Surface_mesh_scratch_property() = default;
+  Surface_mesh_scratch_property(CGAL::Surface_mesh<P>& sm, const T& init)
+      : owner_(new Owner{&sm, sm.template add_property_map<Key, Stored>(std::string(), Stored(init)).first}),
+        map_(owner_->map) {}
+
+  T& operator[](Key k) const { return detail::Property_storage<T>::ref(map_[k]); }
+
+private:
+  std::shared_ptr<Owner> owner_;
+  Map map_;
+};
+
+template <class P, class Tag, class T>
+  requires HasIndexMap<CGAL::Surface_mesh<P>, Tag>
+auto genmesh_native_scratch_property(Tag, CGAL::Surface_mesh<P>& sm, const T& init) {
+  using Key = typename boost::property_traits<decltype(get(Tag{}, sm))>::key_type;
+  return Surface_mesh_scratch_property<P, Key, T>(sm, init);
 }
 
 // ---- CGAL::Polyhedron_3 ----------------------------------------------------
@@ -334,28 +378,11 @@ namespace genmesh::detail {
 
 /// CGAL's dynamic property on a mutable Halfedge_mesh: an anonymous typed
 /// property of the mesh (so it grows with the mesh and is recycled and
-/// compacted with it), removed when the last copy of this map is destroyed.
-/// The mesh must outlive the map, as for CGAL's own dynamic maps.
+/// compacted with it), removed when the last copy of this map is destroyed
+/// (genmesh::Shared_property, <genmesh/mesh_properties.h>). The mesh must
+/// outlive the map, as for CGAL's own dynamic maps.
 template <class Key, class T>
-class Cgal_dynamic_property {
-public:
-  using key_type = Key;
-  using value_type = T;
-  using reference = T&;
-  using category = boost::lvalue_property_map_tag;
-
-  Cgal_dynamic_property() = default;
-  explicit Cgal_dynamic_property(Halfedge_connectivity& m)
-      : owner_(std::make_shared<Scoped_property<Key, T>>(m)), map_(owner_->map()) {}
-
-  T& operator[](Key k) const { return map_[k]; }
-  friend T& get(const Cgal_dynamic_property& m, Key k) { return m.map_[k]; }
-  friend void put(const Cgal_dynamic_property& m, Key k, const T& v) { m.map_[k] = v; }
-
-private:
-  std::shared_ptr<Scoped_property<Key, T>> owner_;
-  Property_map<Key, T> map_;
-};
+using Cgal_dynamic_property = Shared_property<Key, T>;
 
 /// Edge lengths of a Halfedge_mesh of CGAL points (boost::edge_weight, as
 /// Surface_mesh's).

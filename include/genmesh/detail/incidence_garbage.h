@@ -18,6 +18,7 @@ Garbage_collection_maps Incidence_mesh<P>::collect_garbage(Garbage_order order) 
   const std::vector<std::uint32_t> vmap = detail::compaction_map(vremoved_, order);
   const std::vector<std::uint32_t> emap = detail::compaction_map(eremoved_, order);
   const std::vector<std::uint32_t> fmap = detail::compaction_map(fremoved_, order);
+  const std::vector<std::uint32_t> hmap = detail::halfedge_compaction_map(emap);
 
   if (garbage_) {
     // New -> old, to gather the survivors in their new order.
@@ -59,6 +60,12 @@ Garbage_collection_maps Incidence_mesh<P>::collect_garbage(Garbage_order order) 
     pts.reserve(vold.size());
     for (const std::uint32_t v : vold) pts.push_back(points_[v]);
 
+    // The properties move with their elements (assign_incidences keeps them).
+    vprops_.compact(vmap, vold.size());
+    hprops_.compact(hmap, 2 * eold.size());
+    eprops_.compact(emap, eold.size());
+    fprops_.compact(fmap, fold.size());
+
     const bool recycle = recycle_;
     assign_incidences(pts, ends, offsets, corner_edge, corner_sign);
     recycle_ = recycle;
@@ -68,11 +75,8 @@ Garbage_collection_maps Incidence_mesh<P>::collect_garbage(Garbage_order order) 
   Garbage_collection_maps maps;
   maps.vertices.reserve(vmap.size());
   for (const auto i : vmap) maps.vertices.emplace_back(i);
-  maps.halfedges.reserve(2 * emap.size());
-  for (const auto i : emap) {
-    maps.halfedges.emplace_back(i == null ? null : 2 * i);
-    maps.halfedges.emplace_back(i == null ? null : 2 * i + 1);
-  }
+  maps.halfedges.reserve(hmap.size());
+  for (const auto i : hmap) maps.halfedges.emplace_back(i);
   maps.edges.reserve(emap.size());
   for (const auto i : emap) maps.edges.emplace_back(i);
   maps.faces.reserve(fmap.size());
