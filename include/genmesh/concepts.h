@@ -11,6 +11,7 @@
 #include <genmesh/concepts/face_list_graph.h>
 #include <genmesh/concepts/halfedge_graph.h>
 #include <genmesh/concepts/halfedge_list_graph.h>
+#include <genmesh/concepts/local_operations.h>
 #include <genmesh/concepts/mutable_face_graph.h>
 #include <genmesh/concepts/mutable_halfedge_graph.h>
 #include <genmesh/concepts/vertex_list_graph.h>
