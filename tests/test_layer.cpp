@@ -433,7 +433,7 @@ TYPED_TEST(MeshProperties, AddFindRemoveScoped) {
     put(s, Vertex_index(1), 9);
     EXPECT_EQ(get(s, Vertex_index(1)), 9);
     genmesh::Shared_property<genmesh::Face_index, bool> shared(g);
-    auto copy = shared;
+    genmesh::Shared_property<genmesh::Face_index, bool> copy(shared);  // from a non-const lvalue: a copy
     copy[genmesh::Face_index(0)] = true;
     EXPECT_TRUE(shared[genmesh::Face_index(0)]);
   }

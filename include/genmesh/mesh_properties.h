@@ -212,6 +212,7 @@ template <class Key, class T>
 class Scoped_property {
 public:
   template <class Mesh>
+    requires(!std::is_same_v<std::remove_cv_t<Mesh>, Scoped_property>)
   explicit Scoped_property(Mesh& m, T default_value = T())
       : container_(&m.template container<Key>()), map_(container_->add(std::string(), std::move(default_value))) {}
   Scoped_property(const Scoped_property&) = delete;
@@ -255,7 +256,10 @@ public:
   using category = boost::lvalue_property_map_tag;
 
   Shared_property() = default;
+  // Constrained so that copying from a non-const lvalue stays a copy (CGAL
+  // copies maps that way: fimap_(fimap)).
   template <class Mesh>
+    requires(!std::is_same_v<std::remove_cv_t<Mesh>, Shared_property>)
   explicit Shared_property(Mesh& m, T default_value = T())
       : owner_(std::make_shared<Scoped_property<Key, T>>(m, std::move(default_value))), map_(owner_->map()) {}
 
