@@ -794,25 +794,31 @@ namespace {
 
 double linear(const Eigen::Vector3d& p) { return 2.0 * p.x() - 3.0 * p.y() + 0.5 * p.z() + 1.0; }
 
-struct Scalar_transport {
+struct Scalar_transport : genmesh::Mutation_visitor {
   std::vector<double> value, next;
-  std::size_t calls = 0;
+  std::size_t calls = 0, steps = 0;
+  int started = 0, finished = 0;
   double worst_weight_sum = 0;
-  genmesh::Subdivision_visitor visitor() {
-    return {
-        .on_level_begin = [this](int, std::size_t, std::size_t n) { next.assign(n, std::nan("")); },
-        .on_vertex =
-            [this](std::uint32_t v, std::span<const std::uint32_t> src, std::span<const double> w) {
-              double x = 0, sum = 0;
-              for (std::size_t i = 0; i < src.size(); ++i) x += w[i] * value.at(src[i]), sum += w[i];
-              worst_weight_sum = std::max(worst_weight_sum, std::abs(sum - 1.0));
-              next.at(v) = x;
-              ++calls;
-            },
-        .on_level_end = [this](int) { value.swap(next); },
-    };
+  void on_started(const auto&) { ++started; }
+  void on_finished(const auto&) { ++finished; }
+  void on_step(std::string_view step, std::size_t done, std::size_t total) {
+    EXPECT_EQ(step, "level");
+    EXPECT_EQ(done, steps++);
+    EXPECT_LE(done, total);
+    if (done > 0) value.swap(next); // level done - 1 is complete
+    next.clear();
+  }
+  void on_vertex_mask(std::uint32_t v, std::span<const std::uint32_t> src, std::span<const double> w) {
+    double x = 0, sum = 0;
+    for (std::size_t i = 0; i < src.size(); ++i) x += w[i] * value.at(src[i]), sum += w[i];
+    worst_weight_sum = std::max(worst_weight_sum, std::abs(sum - 1.0));
+    if (next.size() <= v) next.resize(v + 1, std::nan(""));
+    next[v] = x;
+    ++calls;
   }
 };
+static_assert(genmesh::visits_vertex_masks<Scalar_transport&>);
+static_assert(!genmesh::visits_vertex_masks<genmesh::Mutation_visitor>);
 
 TYPED_TEST(Subdivision, VisitorMasksCarryAttributesLikePositions) {
   Polygon_soup bumpy = genmesh::make_grid_with_hole(5);
@@ -837,22 +843,25 @@ TYPED_TEST(Subdivision, VisitorMasksCarryAttributesLikePositions) {
           switch (scheme) {
           case Scheme::loop:
             genmesh::loop_subdivision(
-                g, {.iterations = 2, .crease_sharpness = sharp, .corners = corners, .visitor = t.visitor()});
+                g, {.iterations = 2, .crease_sharpness = sharp, .corners = corners}, t);
             break;
           case Scheme::catmull_clark:
             genmesh::catmull_clark_subdivision(
-                g, {.iterations = 2, .crease_sharpness = sharp, .corners = corners, .visitor = t.visitor()});
+                g, {.iterations = 2, .crease_sharpness = sharp, .corners = corners}, t);
             break;
-          case Scheme::butterfly: genmesh::butterfly_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
+          case Scheme::butterfly: genmesh::butterfly_subdivision(g, {.iterations = 2}, t); break;
           // two levels: the second refines √3's border (the (16, 10, 1) and (4, 19, 4) masks)
-          case Scheme::sqrt3: genmesh::sqrt3_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
-          case Scheme::doo_sabin: genmesh::doo_sabin_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
-          default: genmesh::midpoint_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
+          case Scheme::sqrt3: genmesh::sqrt3_subdivision(g, {.iterations = 2}, t); break;
+          case Scheme::doo_sabin: genmesh::doo_sabin_subdivision(g, {.iterations = 2}, t); break;
+          default: genmesh::midpoint_subdivision(g, {.iterations = 2}, t); break;
           }
           return t;
         };
         auto g = mesh_of<TypeParam>(soup);
         const Scalar_transport t = run_on(g);
+        EXPECT_EQ(t.started, 1);
+        EXPECT_EQ(t.finished, 1);
+        EXPECT_EQ(t.steps, 3u); // done = 0, 1, 2
         const Polygon_soup out = genmesh::to_soup(g);
         ASSERT_EQ(t.value.size(), out.num_points());
         EXPECT_GT(t.calls, out.num_points());

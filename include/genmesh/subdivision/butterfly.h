@@ -34,14 +34,13 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace genmesh {
 
 /// Options of butterfly_subdivision().
 struct Butterfly_options {
   int iterations = 1; ///< levels to apply (≥ 0)
-  /// Attribute transport (masks of every new vertex) and level hooks.
-  Subdivision_visitor visitor = {};
 };
 
 namespace detail::subdivision {
@@ -55,8 +54,8 @@ inline double butterfly_weight(std::uint32_t k, std::uint32_t j) {
 }
 
 /// One butterfly level in place on the dense triangle mesh g of counts n.
-template <class G>
-void butterfly_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, const Subdivision_visitor& vis) {
+template <class G, class V>
+void butterfly_level_in_place(G& g, const std::array<std::size_t, 4>& n, V& vis) {
   using H = halfedge_descriptor_t<G>;
   const Stars st = stars(g, n[0], {}, {});
   auto vi = get(vertex_index, g);
@@ -83,7 +82,7 @@ void butterfly_level_in_place(G& g, int level, const std::array<std::size_t, 4>&
     H y = x;
     for (std::uint32_t j = 0; j < k; ++j, y = opposite(prev(y, g), g)) m.add(target(y, g), scale * s[j]);
   };
-  interpolating_one_to_four_level(g, level, n, vis, [&](H x, Mask<G>& m) {
+  interpolating_one_to_four_level(g, n, vis, [&](H x, Mask<G>& m) {
     const H o = opposite(x, g);
     const auto va = source(x, g), vb = target(x, g);
     const std::uint32_t a = num(va), b = num(vb);
@@ -110,17 +109,20 @@ void butterfly_level_in_place(G& g, int level, const std::array<std::size_t, 4>&
 /// triangle mesh g. Throws genmesh::invalid_input naming the first
 /// non-triangle face, g unchanged, when g is not a triangle mesh,
 /// options.iterations < 0, or an edge has no face on either side.
-template <class G>
+template <class G, class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result butterfly_subdivision(G& g, const Butterfly_options& options = {}) {
+Subdivision_result butterfly_subdivision(G& g, const Butterfly_options& options = {}, Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
-  return ds::run_in_place(
+  visitor.on_started(std::as_const(g));
+  Subdivision_result r = ds::run_in_place(
       g, options.iterations, "butterfly_subdivision", {}, {},
       [](const auto& m) { return ds::face_counts(m, "butterfly_subdivision", 3); },
-      [&](auto& m, int level, const std::array<std::size_t, 4>& n, std::vector<double>&) {
-        ds::butterfly_level_in_place(m, level, n, options.visitor);
+      [&](auto& m, int, const std::array<std::size_t, 4>& n, std::vector<double>&) {
+        ds::butterfly_level_in_place(m, n, visitor);
       },
-      ds::one_to_four_counts);
+      ds::one_to_four_counts, visitor);
+  visitor.on_finished(std::as_const(g));
+  return r;
 }
 
 } // namespace genmesh

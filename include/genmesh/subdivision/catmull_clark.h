@@ -30,6 +30,8 @@
 
 #include <genmesh/subdivision/detail/in_place.h>
 
+#include <utility>
+
 namespace genmesh {
 
 /// Options of catmull_clark_subdivision().
@@ -47,8 +49,6 @@ struct Catmull_clark_options {
   /// Vertices (numbered in vertex iteration order) that are corners: they
   /// keep their position at every level. Their numbers stay valid across levels.
   std::vector<std::uint32_t> corners = {};
-  /// Attribute transport (masks of every new vertex) and level hooks.
-  Subdivision_visitor visitor = {};
 };
 
 namespace detail::subdivision {
@@ -58,13 +58,12 @@ inline std::array<std::size_t, 4> quad_split_counts(std::array<std::size_t, 4> n
 }
 
 /// One Catmull-Clark level in place on the dense mesh g of counts n.
-template <class G>
-void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
-                                  const Catmull_clark_options& o) {
+template <class G, class V>
+void catmull_clark_level_in_place(G& g, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
+                                  const Catmull_clark_options& o, V& vis) {
   using Vec = Eigen::Vector3d;
+  constexpr bool masks = visits_vertex_masks<V>;
   const std::size_t nv = n[0], ne = n[1], nf = n[2], nc = n[3];
-  const Subdivision_visitor& vis = o.visitor;
-  if (vis.on_level_begin) vis.on_level_begin(level, nv, nv + ne + nf);
   auto pts = get(vertex_point, g);
   auto vi = get(vertex_index, g);
   auto fi = get(face_index, g);
@@ -76,13 +75,13 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
   std::vector<Vec> q(nv, Vec::Zero());
   Vertex_sums sums{std::vector<Vec>(nv, Vec::Zero()), std::vector<Vec>(creases ? nv : 0, Vec::Zero())};
   std::vector<std::uint32_t> face_begin, face_corner; // for the visitor's masks
-  if (vis.on_vertex) face_begin.assign(1, 0), face_corner.reserve(nc);
+  if constexpr (masks) face_begin.assign(1, 0), face_corner.reserve(nc);
   std::vector<std::uint32_t> src;
   std::vector<double> w;
   std::vector<halfedge_descriptor_t<G>> xs;
   auto old_target = [&](auto x) { return num(target(x, g)); };
-  std::vector<char> border_edge(vis.on_vertex ? ne : 0, 0);
-  std::vector<std::uint32_t> edge_faces(vis.on_vertex ? 4 * ne : 0); // a, b, f1, f2 per edge point (masks)
+  std::vector<char> border_edge(masks ? ne : 0, 0);
+  std::vector<std::uint32_t> edge_faces(masks ? 4 * ne : 0); // a, b, f1, f2 per edge point (masks)
   auto ei = get(edge_index, g);
   // One pass over the faces (face order, each from its lowest vertex): face
   // points, and the edge points numbered by first use (the face of the first
@@ -98,16 +97,16 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
     const Vec c = sum / double(xs.size());
     for (const auto x : xs) q[num(source(x, g))] += c;
     put(pts, av.vertex(ne + j), from_eigen<point_t<G>>(c));
-    if (vis.on_vertex) {
+    if constexpr (masks) {
       src.clear();
       for (const auto x : xs) face_corner.push_back(num(source(x, g))), src.push_back(face_corner.back());
       face_begin.push_back(static_cast<std::uint32_t>(face_corner.size()));
       w.assign(xs.size(), 1.0 / double(xs.size()));
-      vis.on_vertex(static_cast<std::uint32_t>(nv + ne + j), src, w);
+      vis.on_vertex_mask(static_cast<std::uint32_t>(nv + ne + j), src, w);
     }
     for (const auto x : xs) {
       const std::size_t k = static_cast<std::size_t>(get(ei, edge(x, g)));
-      const Edge_use use = edge_use(g, x, k, number, sharp, static_cast<bool>(vis.on_vertex));
+      const Edge_use use = edge_use(g, x, k, number, sharp, masks);
       const double s = creases ? sharp[k] : 0.0;
       const auto [we, ww] = edge_weights(0.25, 0.25, use.border, s);
       if (use.seen) { // second use: the other face point
@@ -116,7 +115,7 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
       }
       const std::uint32_t i = number[k] = used++;
       first_edge_point(g, pts, x, av.vertex(i), we, ww, c, st, use.border, s, sums);
-      if (vis.on_vertex) {
+      if constexpr (masks) {
         border_edge[i] = use.border;
         edge_faces[4 * i] = num(source(x, g)), edge_faces[4 * i + 1] = num(target(x, g));
         edge_faces[4 * i + 2] = static_cast<std::uint32_t>(j);
@@ -130,7 +129,7 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
     const std::uint32_t b = face_begin[jf], e = face_begin[jf + 1];
     for (std::uint32_t c = b; c < e; ++c) s.push_back(face_corner[c]), ws.push_back(weight / double(e - b));
   };
-  if (vis.on_vertex) {
+  if constexpr (masks) {
     std::vector<std::uint32_t> k_of(ne);
     for (std::uint32_t k = 0; k < ne; ++k) k_of[number[k]] = k;
     for (std::uint32_t i = 0; i < ne; ++i) {
@@ -142,10 +141,10 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
         add_face_mask(edge_faces[4 * i + 2], ww, src, w);
         add_face_mask(edge_faces[4 * i + 3], ww, src, w);
       }
-      vis.on_vertex(static_cast<std::uint32_t>(nv + i), src, w);
+      vis.on_vertex_mask(static_cast<std::uint32_t>(nv + i), src, w);
     }
   }
-  std::vector<Vertex_rule> rules(vis.on_vertex ? nv : 0);
+  std::vector<Vertex_rule> rules(masks ? nv : 0);
   {
     std::uint32_t i = 0;
     for (auto v : vertices(g)) {
@@ -157,11 +156,11 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
       if (r.faces != 0) p += r.faces * q[i];
       if (r.ends != 0) p += r.ends * sums.ends[i];
       sums.acc[i] = p;
-      if (vis.on_vertex) rules[i] = r;
+      if constexpr (masks) rules[i] = r;
       ++i;
     }
   }
-  if (vis.on_vertex) {
+  if constexpr (masks) {
     // the faces around each old vertex, from the corner lists
     std::vector<std::uint32_t> vf_begin(nv + 1, 0), vf(face_corner.size());
     for (std::uint32_t c : face_corner) ++vf_begin[c + 1];
@@ -182,7 +181,6 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
   auto ae = append_elements(g, 0, ne + nc, nc - nf);
   split_edges(g, av, ae, nv, ne, number);
   cut_polygons(g, av, ae, nv, ne, nf);
-  if (vis.on_level_end) vis.on_level_end(level);
 }
 
 } // namespace detail::subdivision
@@ -192,17 +190,19 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
 /// options.iterations < 0, a face cycle is corrupt, crease_sharpness has
 /// another size than the edge count, a corner number is out of range, or an
 /// edge has no face on either side.
-template <class G>
+template <class G, class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options& options = {}) {
+Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options& options = {},
+                                             Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
+  visitor.on_started(std::as_const(g));
   Subdivision_result r = ds::run_in_place(
       g, options.iterations, "catmull_clark_subdivision", options.crease_sharpness, options.corners,
       [](const auto& m) { return ds::face_counts(m, "catmull_clark_subdivision", 0); },
-      [&](auto& m, int level, const std::array<std::size_t, 4>& n, std::vector<double>& sharp) {
-        ds::catmull_clark_level_in_place(m, level, n, sharp, options);
+      [&](auto& m, int, const std::array<std::size_t, 4>& n, std::vector<double>& sharp) {
+        ds::catmull_clark_level_in_place(m, n, sharp, options, visitor);
       },
-      ds::quad_split_counts);
+      ds::quad_split_counts, visitor);
   if (options.limit && options.iterations > 0) {
     auto interior = [&](const ds::Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
       const double n = s.valence[v];
@@ -216,6 +216,7 @@ Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options& 
     };
     ds::move_to_limit(g, r, options.corners, options.boundary, interior);
   }
+  visitor.on_finished(std::as_const(g));
   return r;
 }
 

@@ -35,17 +35,16 @@ namespace genmesh {
 /// Options of doo_sabin_subdivision().
 struct Doo_sabin_options {
   int iterations = 1; ///< levels to apply (≥ 0)
-  /// Attribute transport (masks of every new vertex) and level hooks.
-  Subdivision_visitor visitor = {};
 };
 
 namespace detail::subdivision {
 
-/// One level; the visitor gets on_level_begin(level, ...) and every new
-/// vertex's mask in the soup's point order (the rebuilt mesh's vertex order).
-inline Polygon_soup doo_sabin_level(const Snapshot& s, const Subdivision_visitor& vis = {}, int level = 0) {
+/// One level; the visitor gets every new vertex's mask in the soup's point
+/// order (the rebuilt mesh's vertex order).
+template <class V = Mutation_visitor>
+Polygon_soup doo_sabin_level(const Snapshot& s, V&& vis = {}) {
+  constexpr bool masks = visits_vertex_masks<V>;
   const std::size_t nc = s.corner_vertex.size();
-  if (vis.on_level_begin) vis.on_level_begin(level, s.num_vertices(), nc);
   Polygon_soup out;
   out.points.resize(nc);
   std::vector<double> w;
@@ -59,10 +58,10 @@ inline Polygon_soup doo_sabin_level(const Snapshot& s, const Subdivision_visitor
       Eigen::Vector3d p = Eigen::Vector3d::Zero();
       for (std::uint32_t k = 0; k < n; ++k) p += w[k] * s.points[s.corner_vertex[b + (i + k) % n]];
       out.points[b + i] = p;
-      if (vis.on_vertex) {
+      if constexpr (masks) {
         src.resize(n);
         for (std::uint32_t k = 0; k < n; ++k) src[k] = s.corner_vertex[b + (i + k) % n];
-        vis.on_vertex(b + i, src, w);
+        vis.on_vertex_mask(b + i, src, w);
       }
     }
   }
@@ -95,21 +94,17 @@ inline Polygon_soup doo_sabin_level(const Snapshot& s, const Subdivision_visitor
 /// Applies options.iterations levels of Doo-Sabin subdivision to g (any
 /// polygons). Throws genmesh::invalid_input, g unchanged, when
 /// options.iterations < 0.
-template <class G>
+template <class G, class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result doo_sabin_subdivision(G& g, const Doo_sabin_options& options = {}) {
+Subdivision_result doo_sabin_subdivision(G& g, const Doo_sabin_options& options = {}, Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
-  const Subdivision_visitor& vis = options.visitor;
+  visitor.on_started(std::as_const(g));
   std::vector<double> none;
   Subdivision_result r = ds::run_levels(
       g, options.iterations, "doo_sabin_subdivision", 0, none,
-      [&](const ds::Snapshot& s, int i) {
-        // the hooks of a level chained without a rebuild (see run_levels) run on its soup
-        if (i > 0 && vis.on_level_end) vis.on_level_end(i - 1);
-        return ds::Refined{ds::doo_sabin_level(s, vis, i), {}};
-      },
-      ds::no_half);
-  if (options.iterations > 0 && vis.on_level_end) vis.on_level_end(options.iterations - 1);
+      [&](const ds::Snapshot& s, int) { return ds::Refined{ds::doo_sabin_level(s, visitor), {}}; }, ds::no_half,
+      visitor);
+  visitor.on_finished(std::as_const(g));
   return r;
 }
 

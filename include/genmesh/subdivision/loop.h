@@ -39,6 +39,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace genmesh {
 
@@ -64,8 +65,6 @@ struct Loop_options {
   /// keep their position at every level, like a vertex with three or more
   /// crease edges. Their numbers stay valid across levels.
   std::vector<std::uint32_t> corners = {};
-  /// Attribute transport (masks of every new vertex) and level hooks.
-  Subdivision_visitor visitor = {};
 };
 
 namespace detail::subdivision {
@@ -77,19 +76,18 @@ inline double loop_beta(std::uint32_t n, Loop_weights w) {
 }
 
 /// One Loop level in place on the dense triangle mesh g of counts n.
-template <class G>
-void loop_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
-                         const Loop_options& o) {
+template <class G, class V>
+void loop_level_in_place(G& g, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
+                         const Loop_options& o, V& vis) {
   using Vec = Eigen::Vector3d;
+  constexpr bool masks = visits_vertex_masks<V>;
   const std::size_t nv = n[0], ne = n[1], nf = n[2];
-  const Subdivision_visitor& vis = o.visitor;
-  if (vis.on_level_begin) vis.on_level_begin(level, nv, nv + ne);
   auto pts = get(vertex_point, g);
   const Stars st = stars(g, nv, sharp, o.corners);
   const bool creases = !sharp.empty();
   auto av = append_elements(g, ne, 0, 0);
   Vertex_sums sums{std::vector<Vec>(nv, Vec::Zero()), std::vector<Vec>(creases ? nv : 0, Vec::Zero())};
-  std::vector<char> border_edge(vis.on_vertex ? ne : 0, 0);
+  std::vector<char> border_edge(masks ? ne : 0, 0);
   std::vector<std::uint32_t> src;
   std::vector<double> w;
   auto vi = get(vertex_index, g);
@@ -103,7 +101,7 @@ void loop_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, s
     for (int t = 0; t < 3; ++t) {
       const auto x = xs[t];
       const std::size_t k = static_cast<std::size_t>(get(ei, edge(x, g)));
-      const Edge_use use = edge_use(g, x, k, number, sharp, static_cast<bool>(vis.on_vertex));
+      const Edge_use use = edge_use(g, x, k, number, sharp, masks);
       const double s = creases ? sharp[k] : 0.0;
       const auto [we, ww] = edge_weights(0.375, 0.125, use.border, s);
       const auto vc = target(xs[(t + 1) % 3], g); // this face's wing
@@ -113,7 +111,7 @@ void loop_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, s
       }
       const std::uint32_t i = number[k] = used++;
       first_edge_point(g, pts, x, av.vertex(i), we, ww, to_eigen(get(pts, vc)), st, use.border, s, sums);
-      if (vis.on_vertex) {
+      if constexpr (masks) {
         border_edge[i] = use.border;
         src.assign({num(source(x, g)), num(target(x, g))});
         w.assign({we, we});
@@ -121,12 +119,12 @@ void loop_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, s
           const auto vd = target(next(opposite(x, g), g), g);
           src.push_back(num(vc)), src.push_back(num(vd)), w.push_back(ww), w.push_back(ww);
         }
-        vis.on_vertex(static_cast<std::uint32_t>(nv + i), src, w);
+        vis.on_vertex_mask(static_cast<std::uint32_t>(nv + i), src, w);
       }
     }
   });
   border_edge_points(g, pts, av, number, sums.acc);
-  std::vector<Vertex_rule> rules(vis.on_vertex ? nv : 0);
+  std::vector<Vertex_rule> rules(masks ? nv : 0);
   {
     std::array<double, 64> beta_of; // β by valence (a cosine per vertex is measurable)
     beta_of.fill(-1.0);
@@ -140,16 +138,15 @@ void loop_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, s
       Vec p = r.self * to_eigen(get(pts, v)) + r.ring * sums.acc[i];
       if (r.ends != 0) p += r.ends * sums.ends[i];
       sums.acc[i] = p;
-      if (vis.on_vertex) rules[i] = r;
+      if constexpr (masks) rules[i] = r;
       ++i;
     }
   }
-  if (vis.on_vertex) emit_vertex_masks(g, vis, st, number, sharp, border_edge, rules, [](auto...) {});
+  if constexpr (masks) emit_vertex_masks(g, vis, st, number, sharp, border_edge, rules, [](auto...) {});
   write_old_positions(g, pts, sums.acc);
   sums = Vertex_sums{};
   decrement_creases(sharp, number, 2 * ne + 3 * nf);
   refine_one_to_four(g, av, nv, ne, nf, number);
-  if (vis.on_level_end) vis.on_level_end(level);
 }
 
 } // namespace detail::subdivision
@@ -161,17 +158,18 @@ void loop_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, s
 /// when options.iterations < 0, when crease_sharpness has another size than
 /// the edge count, when a corner number is out of range, or when an edge has
 /// no face on either side.
-template <class G>
+template <class G, class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result loop_subdivision(G& g, const Loop_options& options = {}) {
+Subdivision_result loop_subdivision(G& g, const Loop_options& options = {}, Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
+  visitor.on_started(std::as_const(g));
   Subdivision_result r = ds::run_in_place(
       g, options.iterations, "loop_subdivision", options.crease_sharpness, options.corners,
       [](const auto& m) { return ds::face_counts(m, "loop_subdivision", 3); },
-      [&](auto& m, int level, const std::array<std::size_t, 4>& n, std::vector<double>& sharp) {
-        ds::loop_level_in_place(m, level, n, sharp, options);
+      [&](auto& m, int, const std::array<std::size_t, 4>& n, std::vector<double>& sharp) {
+        ds::loop_level_in_place(m, n, sharp, options, visitor);
       },
-      ds::one_to_four_counts);
+      ds::one_to_four_counts, visitor);
   if (options.limit && options.iterations > 0) {
     auto interior = [&](const ds::Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
       const std::uint32_t n = s.valence[v];
@@ -183,6 +181,7 @@ Subdivision_result loop_subdivision(G& g, const Loop_options& options = {}) {
     };
     ds::move_to_limit(g, r, options.corners, options.boundary, interior);
   }
+  visitor.on_finished(std::as_const(g));
   return r;
 }
 

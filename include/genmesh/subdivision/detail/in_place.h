@@ -50,30 +50,9 @@
 
 #include <algorithm>
 #include <array>
-#include <functional>
 #include <span>
 
 namespace genmesh {
-
-/// Attribute transport and observation for every scheme:
-/// loop_subdivision(), catmull_clark_subdivision(), butterfly_subdivision(),
-/// midpoint_subdivision(), sqrt3_subdivision() and doo_sabin_subdivision().
-/// Every member may be left empty.
-struct Subdivision_visitor {
-  /// Before level `level` (0-based within the call) with the vertex counts
-  /// before and after it.
-  std::function<void(int level, std::size_t old_vertices, std::size_t new_vertices)> on_level_begin;
-  /// Once per vertex of the refined level, numbered in the refined mesh's
-  /// vertex iteration order: the vertices of the level before (numbered in
-  /// its vertex iteration order) and the weights, summing to 1, whose
-  /// combination of their old positions is its new position (a source may
-  /// appear more than once; add its weights). Blend user attributes with
-  /// them. Called before the topology changes, in no promised order.
-  std::function<void(std::uint32_t vertex, std::span<const std::uint32_t> sources,
-                     std::span<const double> weights)> on_vertex;
-  /// After level `level`, once the mesh is refined.
-  std::function<void(int level)> on_level_end;
-};
 
 namespace detail::subdivision {
 
@@ -266,8 +245,8 @@ Neighbours neighbours(G& g, const Stars& st, const std::vector<std::uint32_t>& n
 
 /// Emits the mask of old vertex v's rule (face points given by face_mask,
 /// which appends the corners of the faces around v with their weights).
-template <class G, class Border_edge, class Face_mask>
-void emit_vertex_mask(const Subdivision_visitor& vis, const Stars& st, const Neighbours& nb, const Vertex_rule& r,
+template <class G, class V, class Border_edge, class Face_mask>
+void emit_vertex_mask(V& vis, const Stars& st, const Neighbours& nb, const Vertex_rule& r,
                       std::uint32_t v, const std::vector<double>& sharp, Border_edge is_border_edge,
                       Face_mask face_mask, std::vector<std::uint32_t>& src, std::vector<double>& w) {
   src.assign(1, v);
@@ -280,7 +259,7 @@ void emit_vertex_mask(const Subdivision_visitor& vis, const Stars& st, const Nei
       src.push_back(nb.vertex[i]), w.push_back(r.ends);
   }
   if (r.faces != 0) face_mask(v, r.faces, src, w);
-  vis.on_vertex(v, src, w);
+  vis.on_vertex_mask(v, src, w);
 }
 
 /// Rotates the three halfedges x of a triangle so that x[0] leaves its
@@ -382,8 +361,8 @@ void write_old_positions(const G& g, Pts& pts, const std::vector<Eigen::Vector3d
 
 /// The visitor's masks of the old vertices (rules[v]; face points through
 /// face_mask as in emit_vertex_mask); border_edge by edge point number.
-template <class G, class Face_mask>
-void emit_vertex_masks(G& g, const Subdivision_visitor& vis, const Stars& st, const std::vector<std::uint32_t>& number,
+template <class G, class V, class Face_mask>
+void emit_vertex_masks(G& g, V& vis, const Stars& st, const std::vector<std::uint32_t>& number,
                        const std::vector<double>& sharp, const std::vector<char>& border_edge,
                        const std::vector<Vertex_rule>& rules, Face_mask face_mask) {
   const Neighbours nb = neighbours(g, st, number);
@@ -539,11 +518,10 @@ struct Mask {
 /// and the point of old edge x (numbered by first use, as Loop's) is the
 /// combination rule(x, mask) gives, read from the old mesh; the visitor
 /// gets the same masks (an old vertex: itself, weight 1).
-template <class G, class Rule>
-void interpolating_one_to_four_level(G& g, int level, const std::array<std::size_t, 4>& n,
-                                     const Subdivision_visitor& vis, Rule rule) {
+template <class G, class V, class Rule>
+void interpolating_one_to_four_level(G& g, const std::array<std::size_t, 4>& n, V& vis, Rule rule) {
+  constexpr bool masks = visits_vertex_masks<V>;
   const std::size_t nv = n[0], ne = n[1], nf = n[2];
-  if (vis.on_level_begin) vis.on_level_begin(level, nv, nv + ne);
   auto pts = get(vertex_point, g);
   auto vi = get(vertex_index, g);
   auto ei = get(edge_index, g);
@@ -561,19 +539,18 @@ void interpolating_one_to_four_level(G& g, int level, const std::array<std::size
       Eigen::Vector3d p = Eigen::Vector3d::Zero();
       for (std::size_t t = 0; t < mask.vertex.size(); ++t) p += mask.weight[t] * to_eigen(get(pts, mask.vertex[t]));
       put(pts, av.vertex(i), from_eigen<point_t<G>>(p));
-      if (vis.on_vertex) {
+      if constexpr (masks) {
         src.clear();
         for (const auto v : mask.vertex) src.push_back(static_cast<std::uint32_t>(get(vi, v)));
-        vis.on_vertex(static_cast<std::uint32_t>(nv + i), src, mask.weight);
+        vis.on_vertex_mask(static_cast<std::uint32_t>(nv + i), src, mask.weight);
       }
     }
   });
-  if (vis.on_vertex) {
+  if constexpr (masks) {
     const double one = 1.0;
-    for (std::uint32_t v = 0; v < nv; ++v) vis.on_vertex(v, {&v, 1}, {&one, 1});
+    for (std::uint32_t v = 0; v < nv; ++v) vis.on_vertex_mask(v, {&v, 1}, {&one, 1});
   }
   refine_one_to_four(g, av, nv, ne, nf, number);
-  if (vis.on_level_end) vis.on_level_end(level);
 }
 
 /// Step 3 for Catmull-Clark: every old n-gon j (the first nf faces) becomes n
@@ -667,10 +644,10 @@ inline std::array<std::size_t, 4> one_to_four_counts(std::array<std::size_t, 4> 
 /// g) when g allows it, else on a Halfedge_mesh copy linked back into g.
 /// check(g) throws (g untouched) before anything changes; grow(counts) gives
 /// the counts after one level, to reserve the last level's size once.
-template <class G, class Check, class Level>
+template <class G, class Check, class Level, class V>
 Subdivision_result run_in_place(G& g, int iterations, const char* scheme, std::vector<double> sharp,
                                 const std::vector<std::uint32_t>& corners, Check check, Level level,
-                                std::array<std::size_t, 4> (*grow)(std::array<std::size_t, 4>)) {
+                                std::array<std::size_t, 4> (*grow)(std::array<std::size_t, 4>), V& vis) {
   if (iterations < 0) throw invalid_input(std::string(scheme) + ": iterations must be ≥ 0");
   std::size_t nv = 0;
   for (auto v : vertices(g)) (void)v, ++nv;
@@ -698,10 +675,13 @@ Subdivision_result run_in_place(G& g, int iterations, const char* scheme, std::v
               static_cast<typename boost::graph_traits<G>::edges_size_type>(last[1]),
               static_cast<typename boost::graph_traits<G>::faces_size_type>(last[2]));
       std::array<std::size_t, 4> now = counts;
+      const auto total = static_cast<std::size_t>(iterations);
+      vis.on_step("level", 0, total);
       for (int i = 0; i < iterations; ++i) {
         level(g, i, now, sharp);
         now = grow(now);
         ++r.levels_done;
+        vis.on_step("level", static_cast<std::size_t>(r.levels_done), total);
       }
       r.vertices = now[0];
       r.faces = now[2];
@@ -733,10 +713,12 @@ Subdivision_result run_in_place(G& g, int iterations, const char* scheme, std::v
   for (int i = 0; i < iterations; ++i) last = grow(last);
   copy.reserve(last[0], last[1], last[2]);
   std::array<std::size_t, 4> now = counts;
+  vis.on_step("level", 0, static_cast<std::size_t>(iterations));
   for (int i = 0; i < iterations; ++i) {
     level(copy, i, now, sharp);
     now = grow(now);
     ++r.levels_done;
+    vis.on_step("level", static_cast<std::size_t>(r.levels_done), static_cast<std::size_t>(iterations));
   }
   // Back into g: faces in face order, each from next(halfedge(f)), twins by halfedge.
   Polygon_soup out;

@@ -15,6 +15,8 @@
 #include <genmesh/polygon_soup.h>
 #include <genmesh/property_maps.h>
 #include <genmesh/soup_to_mesh.h>
+#include <genmesh/subdivision/types.h>
+#include <genmesh/visitor.h>
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
@@ -30,22 +32,6 @@
 #include <vector>
 
 namespace genmesh {
-
-/// How a scheme treats the mesh border.
-enum class Boundary_rule {
-  smooth, ///< the border curve is refined with the cubic B-spline rules (1/8, 3/4, 1/8; 1/2, 1/2)
-  fixed,  ///< border vertices keep their positions; new border points are edge midpoints
-};
-
-/// What a subdivision did.
-struct Subdivision_result {
-  int levels_done = 0;        ///< levels applied
-  std::size_t vertices = 0;   ///< live counts after the last level
-  std::size_t faces = 0;
-  /// With creases given: the sharpness of every edge of the result, in edge
-  /// iteration order (feed it to the next call); empty otherwise.
-  std::vector<double> edge_sharpness;
-};
 
 namespace detail::subdivision {
 
@@ -403,9 +389,9 @@ struct Refined {
 /// soup to snapshot directly, the last one rebuilds g. With creases (sharp not
 /// empty) the sharpness follows the edges: half(s, c, i) is the refined soup
 /// corner of half i of old corner c.
-template <class G, class Level, class Half>
+template <class G, class Level, class Half, class V>
 Subdivision_result run_levels(G& g, int iterations, const char* scheme, std::uint32_t face_size,
-                              std::vector<double>& sharp, Level level, Half half) {
+                              std::vector<double>& sharp, Level level, Half half, V& vis) {
   if (iterations < 0) throw invalid_input(std::string(scheme) + ": iterations must be ≥ 0");
   check_creases(sharp, static_cast<std::size_t>(num_edges(g)), scheme);
   Subdivision_result r{0, static_cast<std::size_t>(num_vertices(g)), static_cast<std::size_t>(num_faces(g)), {}};
@@ -413,6 +399,7 @@ Subdivision_result run_levels(G& g, int iterations, const char* scheme, std::uin
     Snapshot s = snapshot(g, scheme, face_size);
     std::vector<std::uint32_t> corner_edge, remap;
     for (int i = 0; i < iterations; ++i) {
+      vis.on_step("level", static_cast<std::size_t>(i), static_cast<std::size_t>(iterations));
       Refined out = level(s, i);
       std::size_t new_edges = 0;
       if (i + 1 < iterations) {
@@ -437,6 +424,7 @@ Subdivision_result run_levels(G& g, int iterations, const char* scheme, std::uin
                                   [&](std::uint32_t c, int h) { return half(s, c, h); });
       }
     }
+    vis.on_step("level", static_cast<std::size_t>(iterations), static_cast<std::size_t>(iterations));
   }
   r.edge_sharpness = sharp;
   return r;
