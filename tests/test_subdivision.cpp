@@ -910,11 +910,36 @@ TYPED_TEST(Subdivision, TaggedCornersStay) {
 
 // ---------------------------------------------------------------------------
 // A mesh with removed elements (here an isolated vertex removed, not yet
-// collected) cannot be refined in place; it is refined on a Halfedge_mesh copy
-// and rebuilt, with the same result as the mesh without that vertex, creases
-// included.
+// collected) is refined through the local operations on the mesh itself (no
+// copy), with the same result as the mesh without that vertex, creases
+// included; every scheme reports live counts (with iterations = 0 too).
 
-TYPED_TEST(Subdivision, MeshWithRemovedElementsIsRefinedThroughACopy) {
+TYPED_TEST(Subdivision, EverySchemeOnAMeshWithARemovedVertexCountsLiveElements) {
+  for (Scheme scheme : all_schemes)
+    for (int levels : {0, 2}) {
+      SCOPED_TRACE(name(scheme) + " x" + std::to_string(levels));
+      const Polygon_soup soup =
+          takes_triangles_only(scheme) ? genmesh::make_grid_with_hole(5) : genmesh::make_torus(8, 6, false);
+      Polygon_soup extra = soup;
+      extra.add_point(9, 9, 9); // isolated, removed below
+      auto g = mesh_of<TypeParam>(extra);
+      typename boost::graph_traits<TypeParam>::vertex_descriptor last{};
+      for (auto v : vertices(g)) last = v;
+      remove_vertex(last, g);
+      auto clean = mesh_of<TypeParam>(soup);
+      const genmesh::Subdivision_result a = run(scheme, g, levels), b = run(scheme, clean, levels);
+      std::size_t live = 0;
+      for (auto v : vertices(g)) (void)v, ++live;
+      EXPECT_EQ(a.vertices, live);
+      EXPECT_EQ(a.vertices, b.vertices);
+      EXPECT_EQ(a.faces, b.faces);
+      EXPECT_EQ(a.levels_done, levels);
+      EXPECT_TRUE(genmesh::check_mesh(g).ok());
+      EXPECT_EQ(genmesh::canonical(genmesh::to_soup(g)), genmesh::canonical(genmesh::to_soup(clean)));
+    }
+}
+
+TYPED_TEST(Subdivision, MeshWithRemovedElementsKeepsItsCreases) {
   for (bool loop : {true, false}) {
     SCOPED_TRACE(loop ? "Loop" : "Catmull-Clark");
     const Polygon_soup soup = loop ? genmesh::make_grid_with_hole(5) : genmesh::make_torus(8, 6, false);
@@ -959,6 +984,56 @@ TYPED_TEST(Subdivision, MeshWithRemovedElementsIsRefinedThroughACopy) {
     };
     EXPECT_EQ(creased(g, a.edge_sharpness), creased(clean, b.edge_sharpness));
     EXPECT_FALSE(creased(g, a.edge_sharpness).empty());
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Incidence_mesh refines with its own operations, not on a copy: its native
+// split_edge / split_face report to the visitor with Incidence_mesh
+// descriptors (a copy of another type would report nothing), once per old
+// edge and per cut, and the result's incidence matrices still compose to zero.
+
+struct Count_incidence_operations : genmesh::Mutation_visitor {
+  std::size_t splits = 0, cuts = 0;
+  void on_split_edge(genmesh::Halfedge_index, const genmesh_test::Incidence_mesh&) { ++splits; }
+  void on_split_face(genmesh::Halfedge_index, const genmesh_test::Incidence_mesh&) { ++cuts; }
+};
+
+TEST(SubdivisionNative, IncidenceMeshRefinesWithItsOwnOperations) {
+  for (Scheme scheme : {Scheme::loop, Scheme::catmull_clark, Scheme::butterfly, Scheme::midpoint}) {
+    SCOPED_TRACE(name(scheme));
+    const Polygon_soup soup = scheme == Scheme::catmull_clark ? genmesh::make_torus(8, 6, false)
+                                                              : genmesh::make_grid_with_hole(5);
+    auto g = mesh_of<genmesh_test::Incidence_mesh>(soup);
+    std::size_t splits = 0, cuts = 0; // expected: per level, every edge split; every face cut
+    {
+      auto h = mesh_of<genmesh_test::Halfedge_mesh>(soup);
+      for (int level = 0; level < 2; ++level) {
+        splits += static_cast<std::size_t>(num_edges(h));
+        for (auto f : faces(h)) {
+          std::size_t n = 0;
+          auto x = halfedge(f, h);
+          do ++n, x = next(x, h);
+          while (x != halfedge(f, h));
+          if (scheme == Scheme::catmull_clark) splits += 1, cuts += n - 1; // face point on the first cut
+          else cuts += 3;
+        }
+        run(scheme, h, 1);
+      }
+    }
+    Count_incidence_operations c;
+    switch (scheme) {
+    case Scheme::loop: genmesh::loop_subdivision(g, {.iterations = 2}, c); break;
+    case Scheme::catmull_clark: genmesh::catmull_clark_subdivision(g, {.iterations = 2}, c); break;
+    case Scheme::butterfly: genmesh::butterfly_subdivision(g, {.iterations = 2}, c); break;
+    default: genmesh::midpoint_subdivision(g, {.iterations = 2}, c); break;
+    }
+    EXPECT_EQ(c.splits, splits);
+    EXPECT_EQ(c.cuts, cuts);
+    EXPECT_TRUE(genmesh::check_mesh(g).ok());
+    const Eigen::SparseMatrix<int> d0 = g.d0(), d1 = g.d1();
+    EXPECT_EQ(Eigen::SparseMatrix<int>(d1 * d0).norm(), 0);
+    EXPECT_EQ(static_cast<std::size_t>(d0.rows()), static_cast<std::size_t>(num_edges(g)));
   }
 }
 

@@ -22,12 +22,13 @@
 // each from its lowest vertex); old faces keep the middle triangle.
 // Guarantees: identical on every backend; old vertices interpolated exactly;
 // V' = V + E, F' = 4F, Euler characteristic and border loops kept.
-// Attributes: .visitor.on_vertex receives every new vertex's mask (an old
+// Attributes: the visitor's on_vertex_mask receives every new vertex's mask (an old
 // vertex: itself with weight 1; the weights of an edge point sum to 1 and
 // include the negative wing weights).
 // Limits: triangles only (refused, g unchanged); g's other properties are not
 // refined (new elements get their defaults); a backend without set_next, or a
-// mesh with removed elements, is refined on a Halfedge_mesh copy and rebuilt.
+// mesh with removed elements, is refined through the local operations
+// (split_edge, split_face: the backend's own), never on a copy.
 #pragma once
 
 #include <genmesh/subdivision/detail/in_place.h>
@@ -54,10 +55,10 @@ inline double butterfly_weight(std::uint32_t k, std::uint32_t j) {
 }
 
 /// One butterfly level in place on the dense triangle mesh g of counts n.
-template <class G, class V>
-void butterfly_level_in_place(G& g, const std::array<std::size_t, 4>& n, V& vis) {
+template <class G, class V, class Refiner>
+void butterfly_level_in_place(G& g, const std::array<std::size_t, 4>& n, V& vis, const Refiner& refiner) {
   using H = halfedge_descriptor_t<G>;
-  const Stars st = stars(g, n[0], {}, {});
+  const Stars st = stars(g, {}, {});
   auto vi = get(vertex_index, g);
   auto num = [&](auto v) { return static_cast<std::uint32_t>(get(vi, v)); };
   const auto null_face = boost::graph_traits<G>::null_face();
@@ -82,7 +83,7 @@ void butterfly_level_in_place(G& g, const std::array<std::size_t, 4>& n, V& vis)
     H y = x;
     for (std::uint32_t j = 0; j < k; ++j, y = opposite(prev(y, g), g)) m.add(target(y, g), scale * s[j]);
   };
-  interpolating_one_to_four_level(g, n, vis, [&](H x, Mask<G>& m) {
+  interpolating_one_to_four_level(g, n, vis, refiner, [&](H x, Mask<G>& m) {
     const H o = opposite(x, g);
     const auto va = source(x, g), vb = target(x, g);
     const std::uint32_t a = num(va), b = num(vb);
@@ -117,9 +118,8 @@ Subdivision_result butterfly_subdivision(G& g, const Butterfly_options& options 
   Subdivision_result r = ds::run_in_place(
       g, options.iterations, "butterfly_subdivision", {}, {},
       [](const auto& m) { return ds::face_counts(m, "butterfly_subdivision", 3); },
-      [&](auto& m, int, const std::array<std::size_t, 4>& n, std::vector<double>&) {
-        ds::butterfly_level_in_place(m, n, visitor);
-      },
+      [&](auto& m, const std::array<std::size_t, 4>& n, std::vector<double>&, const std::vector<std::uint32_t>&,
+          const auto& refiner) { ds::butterfly_level_in_place(m, n, visitor, refiner); },
       ds::one_to_four_counts, visitor);
   visitor.on_finished(std::as_const(g));
   return r;

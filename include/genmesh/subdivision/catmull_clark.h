@@ -22,10 +22,12 @@
 // Same masks as CGAL's CatmullClark_mask_3 on closed meshes.
 // Creases (.crease_sharpness): the rules of <genmesh/subdivision/loop.h>
 // (DeRose, Kass, Truong 1998) with Catmull-Clark's smooth masks; tagged
-// corners (.corners) stay; .visitor.on_vertex receives every new vertex's mask.
+// corners (.corners) stay; the visitor's on_vertex_mask receives every new
+// vertex's mask.
 // Limits: g's other properties are not refined (new elements get their
 // defaults); a backend without set_next, or a mesh with removed elements, is
-// refined on a Halfedge_mesh copy and rebuilt.
+// refined through the local operations (split_edge, split_face: the
+// backend's own), never on a copy.
 #pragma once
 
 #include <genmesh/subdivision/detail/in_place.h>
@@ -58,9 +60,10 @@ inline std::array<std::size_t, 4> quad_split_counts(std::array<std::size_t, 4> n
 }
 
 /// One Catmull-Clark level in place on the dense mesh g of counts n.
-template <class G, class V>
+template <class G, class V, class Refiner>
 void catmull_clark_level_in_place(G& g, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
-                                  const Catmull_clark_options& o, V& vis) {
+                                  const std::vector<std::uint32_t>& corners, const Catmull_clark_options& o, V& vis,
+                                  const Refiner& refiner) {
   using Vec = Eigen::Vector3d;
   constexpr bool masks = visits_vertex_masks<V>;
   const std::size_t nv = n[0], ne = n[1], nf = n[2], nc = n[3];
@@ -68,12 +71,20 @@ void catmull_clark_level_in_place(G& g, const std::array<std::size_t, 4>& n, std
   auto vi = get(vertex_index, g);
   auto fi = get(face_index, g);
   auto num = [&](auto v) { return static_cast<std::uint32_t>(get(vi, v)); };
-  const Stars st = stars(g, nv, sharp, o.corners);
+  const Stars st = stars(g, sharp, corners);
   const bool creases = !sharp.empty();
-  auto av = append_elements(g, ne + nf, 0, 0);
+  const std::size_t nvb = index_bound(vertex_index, g);
+  std::vector<std::uint32_t> number(index_bound(edge_index, g), k_none);
+  std::vector<std::uint32_t> face_number; // by face index (masks)
+  if constexpr (masks) {
+    face_number.assign(index_bound(face_index, g), k_none);
+    std::uint32_t j = 0;
+    for (auto f : faces(g)) face_number[static_cast<std::size_t>(get(fi, f))] = j++;
+  }
+  auto points = refiner.new_points(g, ne + nf);
   // Σ face points per vertex (q), Σ ring neighbours (acc), Σ crease neighbours (ends)
-  std::vector<Vec> q(nv, Vec::Zero());
-  Vertex_sums sums{std::vector<Vec>(nv, Vec::Zero()), std::vector<Vec>(creases ? nv : 0, Vec::Zero())};
+  std::vector<Vec> q(nvb, Vec::Zero());
+  Vertex_sums sums{std::vector<Vec>(nvb, Vec::Zero()), std::vector<Vec>(creases ? nvb : 0, Vec::Zero())};
   std::vector<std::uint32_t> face_begin, face_corner; // for the visitor's masks
   if constexpr (masks) face_begin.assign(1, 0), face_corner.reserve(nc);
   std::vector<std::uint32_t> src;
@@ -86,7 +97,6 @@ void catmull_clark_level_in_place(G& g, const std::array<std::size_t, 4>& n, std
   // One pass over the faces (face order, each from its lowest vertex): face
   // points, and the edge points numbered by first use (the face of the first
   // use contributes first), so that the numbering and every sum are canonical.
-  std::vector<std::uint32_t> number(ne, k_none);
   std::uint32_t used = 0;
   std::size_t j = 0;
   for (auto f : faces(g)) {
@@ -96,7 +106,7 @@ void catmull_clark_level_in_place(G& g, const std::array<std::size_t, 4>& n, std
     for (const auto x : xs) sum += to_eigen(get(pts, source(x, g)));
     const Vec c = sum / double(xs.size());
     for (const auto x : xs) q[num(source(x, g))] += c;
-    put(pts, av.vertex(ne + j), from_eigen<point_t<G>>(c));
+    points.set(ne + j, c);
     if constexpr (masks) {
       src.clear();
       for (const auto x : xs) face_corner.push_back(num(source(x, g))), src.push_back(face_corner.back());
@@ -110,28 +120,30 @@ void catmull_clark_level_in_place(G& g, const std::array<std::size_t, 4>& n, std
       const double s = creases ? sharp[k] : 0.0;
       const auto [we, ww] = edge_weights(0.25, 0.25, use.border, s);
       if (use.seen) { // second use: the other face point
-        add_to_point<G>(pts, av.vertex(number[k]), ww, c);
+        points.add(number[k], ww, c);
         continue;
       }
       const std::uint32_t i = number[k] = used++;
-      first_edge_point(g, pts, x, av.vertex(i), we, ww, c, st, use.border, s, sums);
+      first_edge_point(g, pts, x, points, i, we, ww, c, st, use.border, s, sums);
       if constexpr (masks) {
         border_edge[i] = use.border;
         edge_faces[4 * i] = num(source(x, g)), edge_faces[4 * i + 1] = num(target(x, g));
         edge_faces[4 * i + 2] = static_cast<std::uint32_t>(j);
-        edge_faces[4 * i + 3] = use.border ? k_none : static_cast<std::uint32_t>(get(fi, face(opposite(x, g), g)));
+        edge_faces[4 * i + 3] =
+            use.border ? k_none : face_number[static_cast<std::size_t>(get(fi, face(opposite(x, g), g)))];
       }
     }
     ++j;
   }
-  border_edge_points(g, pts, av, number, sums.acc);
+  border_edge_points(g, pts, points, number, sums.acc);
   auto add_face_mask = [&](std::size_t jf, double weight, std::vector<std::uint32_t>& s, std::vector<double>& ws) {
     const std::uint32_t b = face_begin[jf], e = face_begin[jf + 1];
     for (std::uint32_t c = b; c < e; ++c) s.push_back(face_corner[c]), ws.push_back(weight / double(e - b));
   };
   if constexpr (masks) {
     std::vector<std::uint32_t> k_of(ne);
-    for (std::uint32_t k = 0; k < ne; ++k) k_of[number[k]] = k;
+    for (std::uint32_t k = 0; k < number.size(); ++k)
+      if (number[k] != k_none) k_of[number[k]] = k;
     for (std::uint32_t i = 0; i < ne; ++i) {
       const bool border = border_edge[i] != 0;
       const auto [we, ww] = edge_weights(0.25, 0.25, border, creases ? sharp[k_of[i]] : 0.0);
@@ -144,11 +156,11 @@ void catmull_clark_level_in_place(G& g, const std::array<std::size_t, 4>& n, std
       vis.on_vertex_mask(static_cast<std::uint32_t>(nv + i), src, w);
     }
   }
-  std::vector<Vertex_rule> rules(masks ? nv : 0);
+  std::vector<Vertex_rule> rules(masks ? nvb : 0);
   {
-    std::uint32_t i = 0;
     for (auto v : vertices(g)) {
-      if (i == nv) break;
+      const auto i = static_cast<std::uint32_t>(get(vi, v));
+      if (i >= nvb) break; // appended (bulk path): iteration is by increasing index
       const double val = st.valence[i];
       const Vertex_rule smooth = val == 0 ? Vertex_rule{} : Vertex_rule{(val - 2.0) / val, 1.0 / (val * val), 0, 1.0 / (val * val)};
       const Vertex_rule r = vertex_rule(st, i, o.boundary, smooth);
@@ -157,18 +169,17 @@ void catmull_clark_level_in_place(G& g, const std::array<std::size_t, 4>& n, std
       if (r.ends != 0) p += r.ends * sums.ends[i];
       sums.acc[i] = p;
       if constexpr (masks) rules[i] = r;
-      ++i;
     }
   }
   if constexpr (masks) {
     // the faces around each old vertex, from the corner lists
-    std::vector<std::uint32_t> vf_begin(nv + 1, 0), vf(face_corner.size());
+    std::vector<std::uint32_t> vf_begin(nvb + 1, 0), vf(face_corner.size());
     for (std::uint32_t c : face_corner) ++vf_begin[c + 1];
-    for (std::size_t v = 0; v < nv; ++v) vf_begin[v + 1] += vf_begin[v];
+    for (std::size_t v = 0; v < nvb; ++v) vf_begin[v + 1] += vf_begin[v];
     std::vector<std::uint32_t> fill(vf_begin.begin(), vf_begin.end() - 1);
     for (std::uint32_t jf = 0; jf < nf; ++jf)
       for (std::uint32_t c = face_begin[jf]; c < face_begin[jf + 1]; ++c) vf[fill[face_corner[c]]++] = jf;
-    emit_vertex_masks(g, vis, st, number, sharp, border_edge, rules,
+    emit_vertex_masks(g, vis, st, number, used, sharp, border_edge, rules,
                       [&](std::uint32_t x, double weight, std::vector<std::uint32_t>& s, std::vector<double>& ws) {
                         for (std::uint32_t i = vf_begin[x]; i < vf_begin[x + 1]; ++i)
                           add_face_mask(vf[i], weight, s, ws);
@@ -177,10 +188,8 @@ void catmull_clark_level_in_place(G& g, const std::array<std::size_t, 4>& n, std
   write_old_positions(g, pts, sums.acc);
   sums = Vertex_sums{};
   std::vector<Vec>().swap(q);
-  decrement_creases(sharp, number, 2 * ne + nc);
-  auto ae = append_elements(g, 0, ne + nc, nc - nf);
-  split_edges(g, av, ae, nv, ne, number);
-  cut_polygons(g, av, ae, nv, ne, nf);
+  const std::vector<std::uint32_t> other = refiner.quads(g, points, nv, ne, nf, nc, number);
+  decrement_creases(sharp, number, other, index_bound(edge_index, g));
 }
 
 } // namespace detail::subdivision
@@ -199,8 +208,9 @@ Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options& 
   Subdivision_result r = ds::run_in_place(
       g, options.iterations, "catmull_clark_subdivision", options.crease_sharpness, options.corners,
       [](const auto& m) { return ds::face_counts(m, "catmull_clark_subdivision", 0); },
-      [&](auto& m, int, const std::array<std::size_t, 4>& n, std::vector<double>& sharp) {
-        ds::catmull_clark_level_in_place(m, n, sharp, options, visitor);
+      [&](auto& m, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
+          const std::vector<std::uint32_t>& corners, const auto& refiner) {
+        ds::catmull_clark_level_in_place(m, n, sharp, corners, options, visitor, refiner);
       },
       ds::quad_split_counts, visitor);
   if (options.limit && options.iterations > 0) {

@@ -13,7 +13,7 @@
 // Numbering: the corner points in face order, corner by corner from each
 // face's lowest vertex; faces: F-faces (face order), E-faces (edge order),
 // V-faces (vertex order).
-// Attributes: .visitor.on_vertex receives every new vertex's mask (the
+// Attributes: the visitor's on_vertex_mask receives every new vertex's mask (the
 // corner point's α_k over its face's corners).
 // Guarantees: identical on every backend; on closed meshes V' = Σ deg f,
 // F' = F + E + V, the Euler characteristic is kept and every new vertex has

@@ -27,12 +27,13 @@
 // halves of a crease edge get s − 1 (DeRose, Kass, Truong, "Subdivision
 // surfaces in character animation", SIGGRAPH 1998). Border vertices keep the
 // border rule. Tagged corners (.corners) stay where they are.
-// Attributes: .visitor.on_vertex receives every new vertex's mask (old
+// Attributes: the visitor's on_vertex_mask receives every new vertex's mask (old
 // vertices and weights), so user data can be blended with the same rules.
 // Limits: triangles only (refused, mesh unchanged); g's other properties
 // are not refined (new elements get their defaults); a backend without
-// set_next, or a mesh with removed elements, is refined on a Halfedge_mesh
-// copy and rebuilt; positions go through double precision.
+// set_next, or a mesh with removed elements, is refined through the local
+// operations (split_edge, split_face: the backend's own), never on a copy;
+// positions go through double precision.
 #pragma once
 
 #include <genmesh/subdivision/detail/in_place.h>
@@ -75,18 +76,22 @@ inline double loop_beta(std::uint32_t n, Loop_weights w) {
   return (5.0 / 8.0 - c * c) / n;
 }
 
-/// One Loop level in place on the dense triangle mesh g of counts n.
-template <class G, class V>
+/// One Loop level in place on the triangle mesh g of counts n (sharp by
+/// edge index, corners as vertex indices), topology through refiner.
+template <class G, class V, class Refiner>
 void loop_level_in_place(G& g, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
-                         const Loop_options& o, V& vis) {
+                         const std::vector<std::uint32_t>& corners, const Loop_options& o, V& vis,
+                         const Refiner& refiner) {
   using Vec = Eigen::Vector3d;
   constexpr bool masks = visits_vertex_masks<V>;
   const std::size_t nv = n[0], ne = n[1], nf = n[2];
   auto pts = get(vertex_point, g);
-  const Stars st = stars(g, nv, sharp, o.corners);
+  const Stars st = stars(g, sharp, corners);
   const bool creases = !sharp.empty();
-  auto av = append_elements(g, ne, 0, 0);
-  Vertex_sums sums{std::vector<Vec>(nv, Vec::Zero()), std::vector<Vec>(creases ? nv : 0, Vec::Zero())};
+  const std::size_t nvb = index_bound(vertex_index, g);
+  std::vector<std::uint32_t> number(index_bound(edge_index, g), k_none);
+  auto points = refiner.new_points(g, ne);
+  Vertex_sums sums{std::vector<Vec>(nvb, Vec::Zero()), std::vector<Vec>(creases ? nvb : 0, Vec::Zero())};
   std::vector<char> border_edge(masks ? ne : 0, 0);
   std::vector<std::uint32_t> src;
   std::vector<double> w;
@@ -95,7 +100,6 @@ void loop_level_in_place(G& g, const std::array<std::size_t, 4>& n, std::vector<
   auto num = [&](auto v) { return static_cast<std::uint32_t>(get(vi, v)); };
   // Edge points, numbered by first use (faces in face order, each from its
   // lowest vertex), so that the numbering and every sum are canonical.
-  std::vector<std::uint32_t> number(ne, k_none);
   std::uint32_t used = 0;
   for_each_canonical_triangle(g, nf, [&](std::size_t, auto& xs) {
     for (int t = 0; t < 3; ++t) {
@@ -106,11 +110,11 @@ void loop_level_in_place(G& g, const std::array<std::size_t, 4>& n, std::vector<
       const auto [we, ww] = edge_weights(0.375, 0.125, use.border, s);
       const auto vc = target(xs[(t + 1) % 3], g); // this face's wing
       if (use.seen) { // second use: the other wing
-        add_to_point<G>(pts, av.vertex(number[k]), ww, to_eigen(get(pts, vc)));
+        points.add(number[k], ww, to_eigen(get(pts, vc)));
         continue;
       }
       const std::uint32_t i = number[k] = used++;
-      first_edge_point(g, pts, x, av.vertex(i), we, ww, to_eigen(get(pts, vc)), st, use.border, s, sums);
+      first_edge_point(g, pts, x, points, i, we, ww, to_eigen(get(pts, vc)), st, use.border, s, sums);
       if constexpr (masks) {
         border_edge[i] = use.border;
         src.assign({num(source(x, g)), num(target(x, g))});
@@ -123,14 +127,14 @@ void loop_level_in_place(G& g, const std::array<std::size_t, 4>& n, std::vector<
       }
     }
   });
-  border_edge_points(g, pts, av, number, sums.acc);
-  std::vector<Vertex_rule> rules(masks ? nv : 0);
+  border_edge_points(g, pts, points, number, sums.acc);
+  std::vector<Vertex_rule> rules(masks ? nvb : 0);
   {
     std::array<double, 64> beta_of; // β by valence (a cosine per vertex is measurable)
     beta_of.fill(-1.0);
-    std::uint32_t i = 0;
     for (auto v : vertices(g)) {
-      if (i == nv) break;
+      const auto i = static_cast<std::uint32_t>(get(vi, v));
+      if (i >= nvb) break; // appended (bulk path): iteration is by increasing index
       const std::uint32_t val = st.valence[i];
       if (val < beta_of.size() && beta_of[val] < 0) beta_of[val] = loop_beta(val, o.weights);
       const double beta = val == 0 ? 0.0 : val < beta_of.size() ? beta_of[val] : loop_beta(val, o.weights);
@@ -139,14 +143,13 @@ void loop_level_in_place(G& g, const std::array<std::size_t, 4>& n, std::vector<
       if (r.ends != 0) p += r.ends * sums.ends[i];
       sums.acc[i] = p;
       if constexpr (masks) rules[i] = r;
-      ++i;
     }
   }
-  if constexpr (masks) emit_vertex_masks(g, vis, st, number, sharp, border_edge, rules, [](auto...) {});
+  if constexpr (masks) emit_vertex_masks(g, vis, st, number, used, sharp, border_edge, rules, [](auto...) {});
   write_old_positions(g, pts, sums.acc);
   sums = Vertex_sums{};
-  decrement_creases(sharp, number, 2 * ne + 3 * nf);
-  refine_one_to_four(g, av, nv, ne, nf, number);
+  const std::vector<std::uint32_t> other = refiner.one_to_four(g, points, nv, ne, nf, number);
+  decrement_creases(sharp, number, other, index_bound(edge_index, g));
 }
 
 } // namespace detail::subdivision
@@ -166,8 +169,9 @@ Subdivision_result loop_subdivision(G& g, const Loop_options& options = {}, Visi
   Subdivision_result r = ds::run_in_place(
       g, options.iterations, "loop_subdivision", options.crease_sharpness, options.corners,
       [](const auto& m) { return ds::face_counts(m, "loop_subdivision", 3); },
-      [&](auto& m, int, const std::array<std::size_t, 4>& n, std::vector<double>& sharp) {
-        ds::loop_level_in_place(m, n, sharp, options, visitor);
+      [&](auto& m, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
+          const std::vector<std::uint32_t>& corners, const auto& refiner) {
+        ds::loop_level_in_place(m, n, sharp, corners, options, visitor, refiner);
       },
       ds::one_to_four_counts, visitor);
   if (options.limit && options.iterations > 0) {

@@ -15,11 +15,11 @@
 // Guarantees: identical on every backend; V' = V + E + (faces with > 3
 // sides), F' = 4 (triangles) + Σ deg (others); Euler characteristic and
 // border loops kept.
-// Attributes: .visitor.on_vertex receives every new vertex's mask (an old
+// Attributes: the visitor's on_vertex_mask receives every new vertex's mask (an old
 // vertex itself, a midpoint its two ends, a centroid its corners).
 // Limits: g's other properties are not refined in place (new elements get
-// their defaults) and do not survive a rebuild (mesh with non-triangles, a
-// backend without set_next, a mesh with removed elements).
+// their defaults) and do not survive a rebuild (a mesh with non-triangles:
+// the rebuild links a fresh mesh through the backend's own link_soup).
 #pragma once
 
 #include <genmesh/subdivision/detail/in_place.h>
@@ -104,8 +104,9 @@ Subdivision_result midpoint_subdivision(G& g, const Midpoint_options& options = 
     r = ds::run_in_place(
         g, options.iterations, "midpoint_subdivision", {}, {},
         [](const auto& m) { return ds::face_counts(m, "midpoint_subdivision", 3); },
-        [&](auto& m, int, const std::array<std::size_t, 4>& n, std::vector<double>&) {
-          ds::interpolating_one_to_four_level(m, n, visitor, [&](auto x, auto& mask) {
+        [&](auto& m, const std::array<std::size_t, 4>& n, std::vector<double>&, const std::vector<std::uint32_t>&,
+            const auto& refiner) {
+          ds::interpolating_one_to_four_level(m, n, visitor, refiner, [&](auto x, auto& mask) {
             mask.add(source(x, m), 0.5), mask.add(target(x, m), 0.5);
           });
         },

@@ -14,7 +14,7 @@
 // Numbering: old vertices, then per face in face order its face point (or,
 // refined border faces, its two border points); faces: two per interior edge
 // (edge iteration order), one per border edge.
-// Attributes: .visitor.on_vertex receives every new vertex's mask in the
+// Attributes: the visitor's on_vertex_mask receives every new vertex's mask in the
 // numbering above (a face point its corners, 1/3 each; an interior old vertex
 // itself with 1 − α and its neighbours with α/n; a border vertex itself, or
 // (4, 19, 4)/27 when it moves; a border point its (16, 10, 1)/27 mask).

@@ -393,8 +393,13 @@ template <class G, class Level, class Half, class V>
 Subdivision_result run_levels(G& g, int iterations, const char* scheme, std::uint32_t face_size,
                               std::vector<double>& sharp, Level level, Half half, V& vis) {
   if (iterations < 0) throw invalid_input(std::string(scheme) + ": iterations must be ≥ 0");
-  check_creases(sharp, static_cast<std::size_t>(num_edges(g)), scheme);
-  Subdivision_result r{0, static_cast<std::size_t>(num_vertices(g)), static_cast<std::size_t>(num_faces(g)), {}};
+  // live counts by iteration: num_* may count removed elements (Surface_mesh)
+  std::size_t nv = 0, ne = 0, nf = 0;
+  for (auto v : vertices(g)) (void)v, ++nv;
+  for (auto e : edges(g)) (void)e, ++ne;
+  for (auto f : faces(g)) (void)f, ++nf;
+  check_creases(sharp, ne, scheme);
+  Subdivision_result r{0, nv, nf, {}};
   if (iterations > 0) {
     Snapshot s = snapshot(g, scheme, face_size);
     std::vector<std::uint32_t> corner_edge, remap;
