@@ -16,6 +16,8 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
 
+#include <boost/property_map/vector_property_map.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -112,6 +114,35 @@ std::size_t count_edges(const G& g) {
 
 template <class G, class Pick>
 std::vector<double> sharpness_where(const G& g, Pick pick, double value);
+
+// A crease map of g (genmesh::make_crease_map) holding sharp, given in edge
+// iteration order (empty: all 0).
+template <class G>
+auto crease_map_of(const G& g, const std::vector<double>& sharp) {
+  auto m = genmesh::make_crease_map(g);
+  std::size_t k = 0;
+  if (!sharp.empty())
+    for (auto e : edges(g)) put(m, e, sharp.at(k++));
+  return m;
+}
+
+// A crease map's values in edge iteration order.
+template <class G, class M>
+std::vector<double> sharpness_of(const G& g, const M& m) {
+  std::vector<double> out;
+  for (auto e : edges(g)) out.push_back(get(m, e));
+  return out;
+}
+
+// A corner map of g tagging the vertices with these iteration numbers.
+template <class G>
+auto corner_map_of(const G& g, const std::vector<std::uint32_t>& numbers) {
+  auto m = genmesh::make_corner_map(g);
+  std::vector<typename boost::graph_traits<G>::vertex_descriptor> vs;
+  for (auto v : vertices(g)) vs.push_back(v);
+  for (std::uint32_t n : numbers) put(m, vs.at(n), 1);
+  return m;
+}
 
 template <class T>
 class Subdivision : public ::testing::Test {};
@@ -326,11 +357,15 @@ TYPED_TEST(Subdivision, OneCallOfTwoLevelsEqualsTwoCallsOfOne) {
   const Polygon_soup torus = genmesh::make_torus(8, 6, true);
   auto one = mesh_of<TypeParam>(torus), two = mesh_of<TypeParam>(torus);
   const auto sharp = sharpness_where(one, [](std::size_t v) { return v < 6; }, 1.5);
-  const auto r1 = genmesh::loop_subdivision(one, {.iterations = 2, .crease_sharpness = sharp});
-  const auto r2a = genmesh::loop_subdivision(two, {.iterations = 1, .crease_sharpness = sharp});
-  const auto r2b = genmesh::loop_subdivision(two, {.iterations = 1, .crease_sharpness = r2a.edge_sharpness});
+  auto m1 = crease_map_of(one, sharp), m2 = crease_map_of(two, sharp);
+  genmesh::loop_subdivision(one, genmesh::Loop_options{.iterations = 2, .crease_map = m1});
+  // the map carries the sharpness over by itself: the same map, level after level
+  genmesh::loop_subdivision(two, genmesh::Loop_options{.iterations = 1, .crease_map = m2});
+  genmesh::loop_subdivision(two, genmesh::Loop_options{.iterations = 1, .crease_map = m2});
   EXPECT_EQ(genmesh::to_soup(one), genmesh::to_soup(two));
-  EXPECT_EQ(r1.edge_sharpness, r2b.edge_sharpness);
+  const std::vector<double> after = sharpness_of(one, m1);
+  EXPECT_EQ(after, sharpness_of(two, m2));
+  EXPECT_EQ(std::count(after.begin(), after.end(), 0.0), static_cast<std::ptrdiff_t>(after.size())); // 1.5 → 0.5 → 0
 }
 
 TYPED_TEST(Subdivision, EmptyMeshStaysEmpty) {
@@ -636,13 +671,15 @@ TYPED_TEST(Subdivision, SharpCreasesFollowTheBSplineOfTheirControlPolygon) {
     auto g = mesh_of<TypeParam>(torus);
     const auto sharp = sharpness_where(g, [&](std::size_t v) { return v < std::size_t(sides); }, inf);
     ASSERT_EQ(std::count(sharp.begin(), sharp.end(), inf), sides);
-    const auto r = triangles ? genmesh::loop_subdivision(g, {.iterations = 2, .crease_sharpness = sharp})
-                             : genmesh::catmull_clark_subdivision(g, {.iterations = 2, .crease_sharpness = sharp});
-    ASSERT_EQ(r.edge_sharpness.size(), static_cast<std::size_t>(num_edges(g)));
-    EXPECT_EQ(std::count(r.edge_sharpness.begin(), r.edge_sharpness.end(), inf), 4 * sides);
+    auto m = crease_map_of(g, sharp);
+    if (triangles) genmesh::loop_subdivision(g, genmesh::Loop_options{.iterations = 2, .crease_map = m});
+    else genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.iterations = 2, .crease_map = m});
+    const std::vector<double> after = sharpness_of(g, m);
+    ASSERT_EQ(after.size(), static_cast<std::size_t>(num_edges(g)));
+    EXPECT_EQ(std::count(after.begin(), after.end(), inf), 4 * sides);
     EXPECT_TRUE(genmesh::check_mesh(g).ok());
     std::vector<Eigen::Vector3d> ring(torus.points.begin(), torus.points.begin() + sides);
-    expect_same_point_sets(crease_points(g, r.edge_sharpness), bspline(ring, 2), 1e-12);
+    expect_same_point_sets(crease_points(g, after), bspline(ring, 2), 1e-12);
   }
 }
 
@@ -651,8 +688,9 @@ TYPED_TEST(Subdivision, SharpCubeEdgesStayStraight) {
   // and every crease vertex stays on its cube edge (two coordinates at ±1).
   auto g = mesh_of<TypeParam>(genmesh::make_cube());
   const std::vector<double> sharp(12, inf);
-  const auto r = genmesh::catmull_clark_subdivision(g, {.iterations = 3, .crease_sharpness = sharp});
-  const auto pts = crease_points(g, r.edge_sharpness);
+  auto m = crease_map_of(g, sharp);
+  genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.iterations = 3, .crease_map = m});
+  const auto pts = crease_points(g, sharpness_of(g, m));
   EXPECT_EQ(pts.size(), 8u + 12u * 7u); // corners + 7 new points per cube edge
   for (const auto& p : pts) {
     int at_bound = 0;
@@ -679,8 +717,8 @@ TYPED_TEST(Subdivision, SemiSharpCreasesBlendAndDecrement) {
     for (double s : {0.0, inf, 0.5}) {
       auto g = mesh_of<TypeParam>(torus);
       const auto sharp = sharpness_where(g, [](std::size_t v) { return v < 6; }, s);
-      if (triangles) genmesh::loop_subdivision(g, {.iterations = 1, .crease_sharpness = sharp});
-      else genmesh::catmull_clark_subdivision(g, {.iterations = 1, .crease_sharpness = sharp});
+      if (triangles) genmesh::loop_subdivision(g, genmesh::Loop_options{.crease_map = crease_map_of(g, sharp)});
+      else genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.crease_map = crease_map_of(g, sharp)});
       out.push_back(genmesh::to_soup(g));
     }
     std::size_t differ = 0;
@@ -691,11 +729,12 @@ TYPED_TEST(Subdivision, SemiSharpCreasesBlendAndDecrement) {
     EXPECT_GT(differ, 0u);
     auto g = mesh_of<TypeParam>(torus);
     const auto sharp = sharpness_where(g, [](std::size_t v) { return v < 6; }, 1.5);
-    const auto r = triangles ? genmesh::loop_subdivision(g, {.iterations = 1, .crease_sharpness = sharp})
-                             : genmesh::catmull_clark_subdivision(g, {.iterations = 1, .crease_sharpness = sharp});
-    EXPECT_EQ(std::count(r.edge_sharpness.begin(), r.edge_sharpness.end(), 0.5), 12);
-    EXPECT_EQ(std::count(r.edge_sharpness.begin(), r.edge_sharpness.end(), 0.0),
-              static_cast<std::ptrdiff_t>(r.edge_sharpness.size()) - 12);
+    auto m = crease_map_of(g, sharp);
+    if (triangles) genmesh::loop_subdivision(g, genmesh::Loop_options{.crease_map = m});
+    else genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.crease_map = m});
+    const std::vector<double> after = sharpness_of(g, m);
+    EXPECT_EQ(std::count(after.begin(), after.end(), 0.5), 12);
+    EXPECT_EQ(std::count(after.begin(), after.end(), 0.0), static_cast<std::ptrdiff_t>(after.size()) - 12);
   }
 }
 
@@ -715,17 +754,22 @@ TYPED_TEST(Subdivision, CreasesByVertexPairs) {
     ++i;
   }
   EXPECT_EQ(sharp, expected);
+  EXPECT_EQ(sharpness_of(g, genmesh::crease_map(g, std::span<const genmesh::Crease>(c))), expected);
   EXPECT_EQ(std::count(sharp.begin(), sharp.end(), 0.0), 8);
   const std::vector<genmesh::Crease> diagonal = {{0, 3, 1.0}}; // not an edge
   EXPECT_THROW(genmesh::crease_sharpness(g, std::span<const genmesh::Crease>(diagonal)), genmesh::invalid_input);
 }
 
-TYPED_TEST(Subdivision, CreaseVectorOfTheWrongSizeIsRefused) {
-  auto g = mesh_of<TypeParam>(genmesh::make_cube());
-  const Polygon_soup before = genmesh::to_soup(g);
-  EXPECT_THROW(genmesh::catmull_clark_subdivision(g, {.crease_sharpness = std::vector<double>(11, 1.0)}),
-               genmesh::invalid_input);
-  EXPECT_EQ(genmesh::to_soup(g), before);
+TYPED_TEST(Subdivision, NegativeOrNanSharpnessIsRefused) {
+  for (double bad : {-1.0, std::nan("")}) {
+    auto g = mesh_of<TypeParam>(genmesh::make_cube());
+    const Polygon_soup before = genmesh::to_soup(g);
+    auto m = genmesh::make_crease_map(g);
+    put(m, *std::next(edges(g).begin(), 5), bad);
+    EXPECT_THROW(genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.crease_map = m}),
+                 genmesh::invalid_input);
+    EXPECT_EQ(genmesh::to_soup(g), before);
+  }
 }
 
 } // namespace
@@ -762,8 +806,12 @@ TYPED_TEST(Subdivision, LimitPositionsAreInvariantUnderSubdivision) {
       auto g = mesh_of<TypeParam>(k.soup);
       const auto sharp = k.crease_ring ? sharpness_where(g, [](std::size_t v) { return v < 6; }, inf)
                                        : std::vector<double>{};
-      if (k.loop) genmesh::loop_subdivision(g, {.iterations = levels, .crease_sharpness = sharp, .limit = true});
-      else genmesh::catmull_clark_subdivision(g, {.iterations = levels, .crease_sharpness = sharp, .limit = true});
+      if (k.loop)
+        genmesh::loop_subdivision(
+            g, genmesh::Loop_options{.iterations = levels, .crease_map = crease_map_of(g, sharp), .limit = true});
+      else
+        genmesh::catmull_clark_subdivision(
+            g, genmesh::Catmull_clark_options{.iterations = levels, .crease_map = crease_map_of(g, sharp), .limit = true});
       out.push_back(genmesh::to_soup(g));
       if (levels == 1) old_vertices = out.back().num_points();
     }
@@ -842,12 +890,18 @@ TYPED_TEST(Subdivision, VisitorMasksCarryAttributesLikePositions) {
           const std::vector<std::uint32_t> corners = creases ? std::vector<std::uint32_t>{7} : std::vector<std::uint32_t>{};
           switch (scheme) {
           case Scheme::loop:
-            genmesh::loop_subdivision(
-                g, {.iterations = 2, .crease_sharpness = sharp, .corners = corners}, t);
+            genmesh::loop_subdivision(g,
+                                      genmesh::Loop_options{.iterations = 2,
+                                                            .crease_map = crease_map_of(g, sharp),
+                                                            .corner_map = corner_map_of(g, corners)},
+                                      t);
             break;
           case Scheme::catmull_clark:
-            genmesh::catmull_clark_subdivision(
-                g, {.iterations = 2, .crease_sharpness = sharp, .corners = corners}, t);
+            genmesh::catmull_clark_subdivision(g,
+                                               genmesh::Catmull_clark_options{.iterations = 2,
+                                                                              .crease_map = crease_map_of(g, sharp),
+                                                                              .corner_map = corner_map_of(g, corners)},
+                                               t);
             break;
           case Scheme::butterfly: genmesh::butterfly_subdivision(g, {.iterations = 2}, t); break;
           // two levels: the second refines √3's border (the (16, 10, 1) and (4, 19, 4) masks)
@@ -875,7 +929,7 @@ TYPED_TEST(Subdivision, VisitorMasksCarryAttributesLikePositions) {
 
 // ---------------------------------------------------------------------------
 // Tagged corners stay where they are at every level, interior or on the
-// border; out-of-range corners are refused with the mesh unchanged.
+// border; an untagged vertex of the corner map moves as without the map.
 
 TYPED_TEST(Subdivision, TaggedCornersStay) {
   for (bool loop : {true, false}) {
@@ -887,10 +941,11 @@ TYPED_TEST(Subdivision, TaggedCornersStay) {
     auto g = mesh_of<TypeParam>(bumpy);
     auto plain = mesh_of<TypeParam>(bumpy);
     if (loop) {
-      genmesh::loop_subdivision(g, {.iterations = 2, .corners = corners});
+      genmesh::loop_subdivision(g, genmesh::Loop_options{.iterations = 2, .corner_map = corner_map_of(g, corners)});
       genmesh::loop_subdivision(plain, {.iterations = 2});
     } else {
-      genmesh::catmull_clark_subdivision(g, {.iterations = 2, .corners = corners});
+      genmesh::catmull_clark_subdivision(
+          g, genmesh::Catmull_clark_options{.iterations = 2, .corner_map = corner_map_of(g, corners)});
       genmesh::catmull_clark_subdivision(plain, {.iterations = 2});
     }
     const Polygon_soup out = genmesh::to_soup(g), moved = genmesh::to_soup(plain);
@@ -900,11 +955,9 @@ TYPED_TEST(Subdivision, TaggedCornersStay) {
     }
     EXPECT_TRUE(genmesh::check_mesh(g).ok());
     auto h = mesh_of<TypeParam>(bumpy);
-    const Polygon_soup before = genmesh::to_soup(h);
-    const std::vector<std::uint32_t> bad = {static_cast<std::uint32_t>(bumpy.num_points())};
-    if (loop) EXPECT_THROW(genmesh::loop_subdivision(h, {.corners = bad}), genmesh::invalid_input);
-    else EXPECT_THROW(genmesh::catmull_clark_subdivision(h, {.corners = bad}), genmesh::invalid_input);
-    EXPECT_EQ(genmesh::to_soup(h), before);
+    if (loop) genmesh::loop_subdivision(h, genmesh::Loop_options{.iterations = 2, .corner_map = corner_map_of(h, {})});
+    else genmesh::catmull_clark_subdivision(h, genmesh::Catmull_clark_options{.iterations = 2, .corner_map = corner_map_of(h, {})});
+    EXPECT_EQ(genmesh::to_soup(h), moved);
   }
 }
 
@@ -952,12 +1005,13 @@ TYPED_TEST(Subdivision, MeshWithRemovedElementsKeepsItsCreases) {
     auto clean = mesh_of<TypeParam>(soup);
     const auto sharp = sharpness_where(clean, [](std::size_t v) { return v < 6; }, 3.5);
     genmesh::Subdivision_result a, b;
+    auto mg = crease_map_of(g, sharp), mc = crease_map_of(clean, sharp);
     if (loop) {
-      a = genmesh::loop_subdivision(g, {.iterations = 2, .crease_sharpness = sharp});
-      b = genmesh::loop_subdivision(clean, {.iterations = 2, .crease_sharpness = sharp});
+      a = genmesh::loop_subdivision(g, genmesh::Loop_options{.iterations = 2, .crease_map = mg});
+      b = genmesh::loop_subdivision(clean, genmesh::Loop_options{.iterations = 2, .crease_map = mc});
     } else {
-      a = genmesh::catmull_clark_subdivision(g, {.iterations = 2, .crease_sharpness = sharp});
-      b = genmesh::catmull_clark_subdivision(clean, {.iterations = 2, .crease_sharpness = sharp});
+      a = genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.iterations = 2, .crease_map = mg});
+      b = genmesh::catmull_clark_subdivision(clean, genmesh::Catmull_clark_options{.iterations = 2, .crease_map = mc});
     }
     EXPECT_EQ(a.vertices, b.vertices);
     EXPECT_EQ(a.faces, b.faces);
@@ -982,8 +1036,54 @@ TYPED_TEST(Subdivision, MeshWithRemovedElementsKeepsItsCreases) {
       });
       return out;
     };
-    EXPECT_EQ(creased(g, a.edge_sharpness), creased(clean, b.edge_sharpness));
-    EXPECT_FALSE(creased(g, a.edge_sharpness).empty());
+    EXPECT_EQ(creased(g, sharpness_of(g, mg)), creased(clean, sharpness_of(clean, mc)));
+    EXPECT_FALSE(creased(g, sharpness_of(g, mg)).empty());
+  }
+}
+
+// ---------------------------------------------------------------------------
+// .vertex_point_map: the positions are read and written through the given map
+// (an external map over the vertex index holding twice the mesh's own
+// points), for every scheme, on the in-place paths and the rebuild path: the
+// map ends with exactly twice the positions of a run on the mesh's own points
+// (scaling by 2 is exact), on every backend.
+
+TYPED_TEST(Subdivision, VertexPointMapIsReadAndWritten) {
+  for (Scheme scheme : all_schemes) {
+    if (scheme == Scheme::loop_warren) continue;
+    SCOPED_TRACE(name(scheme));
+    const Polygon_soup soup =
+        takes_triangles_only(scheme) ? genmesh::make_grid_with_hole(5) : genmesh::make_torus(8, 6, false);
+    auto g = mesh_of<TypeParam>(soup), reference = mesh_of<TypeParam>(soup);
+    auto vi = get(genmesh::vertex_index, g);
+    boost::vector_property_map<Eigen::Vector3d, decltype(vi)> twice(
+        static_cast<unsigned>(index_bound(genmesh::vertex_index, g)), vi);
+    auto own = get(genmesh::vertex_point, g);
+    for (auto v : vertices(g)) put(twice, v, Eigen::Vector3d(2.0 * genmesh::to_eigen(get(own, v))));
+    switch (scheme) {
+    case Scheme::loop: genmesh::loop_subdivision(g, genmesh::Loop_options{.iterations = 2, .vertex_point_map = twice}); break;
+    case Scheme::catmull_clark:
+      genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.iterations = 2, .vertex_point_map = twice});
+      break;
+    case Scheme::butterfly:
+      genmesh::butterfly_subdivision(g, genmesh::Butterfly_options{.iterations = 2, .vertex_point_map = twice});
+      break;
+    case Scheme::sqrt3: genmesh::sqrt3_subdivision(g, genmesh::Sqrt3_options{.iterations = 2, .vertex_point_map = twice}); break;
+    case Scheme::doo_sabin:
+      genmesh::doo_sabin_subdivision(g, genmesh::Doo_sabin_options{.iterations = 2, .vertex_point_map = twice});
+      break;
+    default: genmesh::midpoint_subdivision(g, genmesh::Midpoint_options{.iterations = 2, .vertex_point_map = twice}); break;
+    }
+    run(scheme, reference, 2);
+    const Polygon_soup ref = genmesh::to_soup(reference);
+    std::size_t k = 0;
+    for (auto v : vertices(g)) {
+      ASSERT_LT(k, ref.num_points());
+      EXPECT_EQ(get(twice, v), Eigen::Vector3d(2.0 * ref.points[k])) << k;
+      ++k;
+    }
+    EXPECT_EQ(k, ref.num_points());
+    EXPECT_TRUE(genmesh::check_mesh(g).ok());
   }
 }
 

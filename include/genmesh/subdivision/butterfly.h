@@ -40,8 +40,12 @@
 namespace genmesh {
 
 /// Options of butterfly_subdivision().
+template <class VertexPointMap = Default_map>
 struct Butterfly_options {
   int iterations = 1; ///< levels to apply (≥ 0)
+  /// Vertex → point (read-write; default get(genmesh::vertex_point, g)); it
+  /// must accept the vertices the call adds.
+  VertexPointMap vertex_point_map = {};
 };
 
 namespace detail::subdivision {
@@ -110,13 +114,13 @@ void butterfly_level_in_place(G& g, const std::array<std::size_t, 4>& n, V& vis,
 /// triangle mesh g. Throws genmesh::invalid_input naming the first
 /// non-triangle face, g unchanged, when g is not a triangle mesh,
 /// options.iterations < 0, or an edge has no face on either side.
-template <class G, class Visitor = Mutation_visitor>
+template <class G, class VertexPointMap = Default_map, class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result butterfly_subdivision(G& g, const Butterfly_options& options = {}, Visitor&& visitor = {}) {
+Subdivision_result butterfly_subdivision(G& g, const Butterfly_options<VertexPointMap>& options = {}, Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
   visitor.on_started(std::as_const(g));
   Subdivision_result r = ds::run_in_place(
-      g, options.iterations, "butterfly_subdivision", {}, {},
+      g, options.iterations, "butterfly_subdivision", Default_map{}, Default_map{}, options.vertex_point_map,
       [](const auto& m) { return ds::face_counts(m, "butterfly_subdivision", 3); },
       [&](auto& m, const std::array<std::size_t, 4>& n, std::vector<double>&, const std::vector<std::uint32_t>&,
           const auto& refiner) { ds::butterfly_level_in_place(m, n, visitor, refiner); },

@@ -36,21 +36,27 @@
 
 namespace genmesh {
 
-/// Options of catmull_clark_subdivision().
+/// Options of catmull_clark_subdivision(). With maps, name the type by its
+/// arguments' deduction: genmesh::Catmull_clark_options{.crease_map = m}.
+template <class CreaseMap = Default_map, class CornerMap = Default_map, class VertexPointMap = Default_map>
 struct Catmull_clark_options {
   int iterations = 1;                             ///< levels to apply (≥ 0)
   Boundary_rule boundary = Boundary_rule::smooth; ///< border rule
-  /// Crease sharpness per edge, in edge iteration order (empty: no creases):
-  /// 0 smooth, ∞ sharp, fractional semi-sharp (DeRose, Kass, Truong 1998).
-  std::vector<double> crease_sharpness = {};
+  /// Edge → crease sharpness, as Loop_options::crease_map: read before the
+  /// first level, holding every edge's sharpness of the result after the
+  /// last (the map must accept the edges the call adds).
+  CreaseMap crease_map = {};
   /// After the last level (iterations ≥ 1: all faces are quads), move every
   /// vertex to its limit position (n² v + 4 Σ edge neighbours + Σ diagonal
   /// neighbours) / (n (n + 5)); border and crease vertices (p + 4v + q)/6,
   /// corners stay.
   bool limit = false;
-  /// Vertices (numbered in vertex iteration order) that are corners: they
-  /// keep their position at every level. Their numbers stay valid across levels.
-  std::vector<std::uint32_t> corners = {};
+  /// Vertex → bool (read once; default: none): tagged vertices are corners,
+  /// they keep their position at every level.
+  CornerMap corner_map = {};
+  /// Vertex → point (read-write; default get(genmesh::vertex_point, g)): the
+  /// positions read and written; it must accept the vertices the call adds.
+  VertexPointMap vertex_point_map = {};
 };
 
 namespace detail::subdivision {
@@ -60,14 +66,14 @@ inline std::array<std::size_t, 4> quad_split_counts(std::array<std::size_t, 4> n
 }
 
 /// One Catmull-Clark level in place on the dense mesh g of counts n.
-template <class G, class V, class Refiner>
+template <class G, class O, class V, class Refiner>
 void catmull_clark_level_in_place(G& g, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
-                                  const std::vector<std::uint32_t>& corners, const Catmull_clark_options& o, V& vis,
+                                  const std::vector<std::uint32_t>& corners, const O& o, V& vis,
                                   const Refiner& refiner) {
   using Vec = Eigen::Vector3d;
   constexpr bool masks = visits_vertex_masks<V>;
   const std::size_t nv = n[0], ne = n[1], nf = n[2], nc = n[3];
-  auto pts = get(vertex_point, g);
+  auto pts = refiner.pts;
   auto vi = get(vertex_index, g);
   auto fi = get(face_index, g);
   auto num = [&](auto v) { return static_cast<std::uint32_t>(get(vi, v)); };
@@ -196,23 +202,24 @@ void catmull_clark_level_in_place(G& g, const std::array<std::size_t, 4>& n, std
 
 /// Applies options.iterations levels of Catmull-Clark subdivision to g (any
 /// polygons). Throws genmesh::invalid_input, g unchanged, when
-/// options.iterations < 0, a face cycle is corrupt, crease_sharpness has
-/// another size than the edge count, a corner number is out of range, or an
-/// edge has no face on either side.
-template <class G, class Visitor = Mutation_visitor>
+/// options.iterations < 0, a face cycle is corrupt, the crease map gives an
+/// edge a negative or NaN sharpness, or an edge has no face on either side.
+template <class G, class CreaseMap = Default_map, class CornerMap = Default_map, class VertexPointMap = Default_map,
+          class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options& options = {},
+Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options<CreaseMap, CornerMap, VertexPointMap>& options = {},
                                              Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
   visitor.on_started(std::as_const(g));
+  ds::Final_tags tags;
   Subdivision_result r = ds::run_in_place(
-      g, options.iterations, "catmull_clark_subdivision", options.crease_sharpness, options.corners,
+      g, options.iterations, "catmull_clark_subdivision", options.crease_map, options.corner_map, options.vertex_point_map,
       [](const auto& m) { return ds::face_counts(m, "catmull_clark_subdivision", 0); },
       [&](auto& m, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
           const std::vector<std::uint32_t>& corners, const auto& refiner) {
         ds::catmull_clark_level_in_place(m, n, sharp, corners, options, visitor, refiner);
       },
-      ds::quad_split_counts, visitor);
+      ds::quad_split_counts, visitor, &tags);
   if (options.limit && options.iterations > 0) {
     auto interior = [&](const ds::Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
       const double n = s.valence[v];
@@ -224,7 +231,7 @@ Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options& 
       }
       return (n * n * s.points[v] + 4.0 * edges + diagonals) / (n * (n + 5.0));
     };
-    ds::move_to_limit(g, r, options.corners, options.boundary, interior);
+    ds::move_to_limit(g, tags, options.boundary, interior, options.vertex_point_map);
   }
   visitor.on_finished(std::as_const(g));
   return r;

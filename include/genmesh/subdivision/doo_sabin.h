@@ -33,8 +33,12 @@
 namespace genmesh {
 
 /// Options of doo_sabin_subdivision().
+template <class VertexPointMap = Default_map>
 struct Doo_sabin_options {
   int iterations = 1; ///< levels to apply (≥ 0)
+  /// Vertex → point (read-write; default get(genmesh::vertex_point, g)); it
+  /// must accept the vertices the call adds.
+  VertexPointMap vertex_point_map = {};
 };
 
 namespace detail::subdivision {
@@ -94,16 +98,16 @@ Polygon_soup doo_sabin_level(const Snapshot& s, V&& vis = {}) {
 /// Applies options.iterations levels of Doo-Sabin subdivision to g (any
 /// polygons). Throws genmesh::invalid_input, g unchanged, when
 /// options.iterations < 0.
-template <class G, class Visitor = Mutation_visitor>
+template <class G, class VertexPointMap = Default_map, class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result doo_sabin_subdivision(G& g, const Doo_sabin_options& options = {}, Visitor&& visitor = {}) {
+Subdivision_result doo_sabin_subdivision(G& g, const Doo_sabin_options<VertexPointMap>& options = {}, Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
   visitor.on_started(std::as_const(g));
   std::vector<double> none;
   Subdivision_result r = ds::run_levels(
       g, options.iterations, "doo_sabin_subdivision", 0, none,
       [&](const ds::Snapshot& s, int) { return ds::Refined{ds::doo_sabin_level(s, visitor), {}}; }, ds::no_half,
-      visitor);
+      visitor, options.vertex_point_map);
   visitor.on_finished(std::as_const(g));
   return r;
 }

@@ -50,22 +50,32 @@ enum class Loop_weights {
   warren, ///< Warren's simplified β = 3/(8n) (3/16 for n = 3)
 };
 
-/// Options of loop_subdivision().
+/// Options of loop_subdivision(). With maps, name the type by its
+/// arguments' deduction: genmesh::Loop_options{.iterations = 2, .crease_map = m}.
+template <class CreaseMap = Default_map, class CornerMap = Default_map, class VertexPointMap = Default_map>
 struct Loop_options {
   int iterations = 1;                            ///< levels to apply (≥ 0)
   Boundary_rule boundary = Boundary_rule::smooth; ///< border rule
   Loop_weights weights = Loop_weights::loop;      ///< interior vertex weights
-  /// Crease sharpness per edge, in edge iteration order (empty: no creases):
-  /// 0 smooth, ∞ sharp, fractional semi-sharp (DeRose, Kass, Truong 1998).
-  std::vector<double> crease_sharpness = {};
+  /// Edge → crease sharpness (a read-write property map, values convertible
+  /// to double; default: no creases): 0 smooth, ∞ sharp, fractional
+  /// semi-sharp (DeRose, Kass, Truong 1998). After the call every edge of the
+  /// result holds its sharpness (the halves of an edge of sharpness s get
+  /// max(0, s − 1), new edges 0), so the map must accept the edges the call
+  /// adds: a property map of g, genmesh::make_crease_map(g), or any
+  /// map indexed by edge index that grows (boost::vector_property_map).
+  CreaseMap crease_map = {};
   /// After the last level (iterations ≥ 1), move every vertex to its limit
   /// position: (1 − nγ) v + γ Σ neighbours, γ = 1/(3/(8β) + n); border and
   /// crease vertices (p + 4v + q)/6, corners stay.
   bool limit = false;
-  /// Vertices (numbered in vertex iteration order) that are corners: they
-  /// keep their position at every level, like a vertex with three or more
-  /// crease edges. Their numbers stay valid across levels.
-  std::vector<std::uint32_t> corners = {};
+  /// Vertex → bool (read once, before the first level; default: none):
+  /// tagged vertices are corners, they keep their position at every level,
+  /// like a vertex with three or more crease edges.
+  CornerMap corner_map = {};
+  /// Vertex → point (read-write; default get(genmesh::vertex_point, g)): the
+  /// positions read and written; it must accept the vertices the call adds.
+  VertexPointMap vertex_point_map = {};
 };
 
 namespace detail::subdivision {
@@ -78,14 +88,13 @@ inline double loop_beta(std::uint32_t n, Loop_weights w) {
 
 /// One Loop level in place on the triangle mesh g of counts n (sharp by
 /// edge index, corners as vertex indices), topology through refiner.
-template <class G, class V, class Refiner>
+template <class G, class O, class V, class Refiner>
 void loop_level_in_place(G& g, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
-                         const std::vector<std::uint32_t>& corners, const Loop_options& o, V& vis,
-                         const Refiner& refiner) {
+                         const std::vector<std::uint32_t>& corners, const O& o, V& vis, const Refiner& refiner) {
   using Vec = Eigen::Vector3d;
   constexpr bool masks = visits_vertex_masks<V>;
   const std::size_t nv = n[0], ne = n[1], nf = n[2];
-  auto pts = get(vertex_point, g);
+  auto pts = refiner.pts;
   const Stars st = stars(g, sharp, corners);
   const bool creases = !sharp.empty();
   const std::size_t nvb = index_bound(vertex_index, g);
@@ -158,22 +167,24 @@ void loop_level_in_place(G& g, const std::array<std::size_t, 4>& n, std::vector<
 /// g (positions through get(genmesh::vertex_point, g)). Throws
 /// genmesh::invalid_input naming the first non-triangle face (in face
 /// iteration order) and leaves g unchanged when g is not a triangle mesh,
-/// when options.iterations < 0, when crease_sharpness has another size than
-/// the edge count, when a corner number is out of range, or when an edge has
-/// no face on either side.
-template <class G, class Visitor = Mutation_visitor>
+/// when options.iterations < 0, when the crease map gives an edge a negative
+/// or NaN sharpness, or when an edge has no face on either side.
+template <class G, class CreaseMap = Default_map, class CornerMap = Default_map, class VertexPointMap = Default_map,
+          class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result loop_subdivision(G& g, const Loop_options& options = {}, Visitor&& visitor = {}) {
+Subdivision_result loop_subdivision(G& g, const Loop_options<CreaseMap, CornerMap, VertexPointMap>& options = {},
+                                    Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
   visitor.on_started(std::as_const(g));
+  ds::Final_tags tags;
   Subdivision_result r = ds::run_in_place(
-      g, options.iterations, "loop_subdivision", options.crease_sharpness, options.corners,
+      g, options.iterations, "loop_subdivision", options.crease_map, options.corner_map, options.vertex_point_map,
       [](const auto& m) { return ds::face_counts(m, "loop_subdivision", 3); },
       [&](auto& m, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
           const std::vector<std::uint32_t>& corners, const auto& refiner) {
         ds::loop_level_in_place(m, n, sharp, corners, options, visitor, refiner);
       },
-      ds::one_to_four_counts, visitor);
+      ds::one_to_four_counts, visitor, &tags);
   if (options.limit && options.iterations > 0) {
     auto interior = [&](const ds::Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
       const std::uint32_t n = s.valence[v];
@@ -183,7 +194,7 @@ Subdivision_result loop_subdivision(G& g, const Loop_options& options = {}, Visi
       const double gamma = 1.0 / (3.0 / (8.0 * ds::loop_beta(n, options.weights)) + n);
       return (1.0 - n * gamma) * s.points[v] + gamma * ring;
     };
-    ds::move_to_limit(g, r, options.corners, options.boundary, interior);
+    ds::move_to_limit(g, tags, options.boundary, interior, options.vertex_point_map);
   }
   visitor.on_finished(std::as_const(g));
   return r;

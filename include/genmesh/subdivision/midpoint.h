@@ -27,8 +27,12 @@
 namespace genmesh {
 
 /// Options of midpoint_subdivision().
+template <class VertexPointMap = Default_map>
 struct Midpoint_options {
   int iterations = 1; ///< levels to apply (≥ 0)
+  /// Vertex → point (read-write; default get(genmesh::vertex_point, g)); it
+  /// must accept the vertices the call adds.
+  VertexPointMap vertex_point_map = {};
 };
 
 namespace detail::subdivision {
@@ -94,15 +98,15 @@ bool all_triangles(const G& g) {
 /// Applies options.iterations levels of midpoint subdivision to g (any
 /// polygons). Throws genmesh::invalid_input, g unchanged, when
 /// options.iterations < 0.
-template <class G, class Visitor = Mutation_visitor>
+template <class G, class VertexPointMap = Default_map, class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result midpoint_subdivision(G& g, const Midpoint_options& options = {}, Visitor&& visitor = {}) {
+Subdivision_result midpoint_subdivision(G& g, const Midpoint_options<VertexPointMap>& options = {}, Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
   visitor.on_started(std::as_const(g));
   Subdivision_result r;
   if (ds::all_triangles(g)) {
     r = ds::run_in_place(
-        g, options.iterations, "midpoint_subdivision", {}, {},
+        g, options.iterations, "midpoint_subdivision", Default_map{}, Default_map{}, options.vertex_point_map,
         [](const auto& m) { return ds::face_counts(m, "midpoint_subdivision", 3); },
         [&](auto& m, const std::array<std::size_t, 4>& n, std::vector<double>&, const std::vector<std::uint32_t>&,
             const auto& refiner) {
@@ -116,7 +120,7 @@ Subdivision_result midpoint_subdivision(G& g, const Midpoint_options& options = 
     r = ds::run_levels(
         g, options.iterations, "midpoint_subdivision", 0, none,
         [&](const ds::Snapshot& s, int) { return ds::Refined{ds::midpoint_level(s, visitor), {}}; }, ds::no_half,
-        visitor);
+        visitor, options.vertex_point_map);
   }
   visitor.on_finished(std::as_const(g));
   return r;

@@ -39,12 +39,16 @@
 namespace genmesh {
 
 /// Options of sqrt3_subdivision().
+template <class VertexPointMap = Default_map>
 struct Sqrt3_options {
   int iterations = 1; ///< levels to apply (≥ 0)
   /// smooth: Kobbelt's border rule at every second level of a call (levels
   /// 1, 3, ... counted from 0, as CGAL's Sqrt3_subdivision); fixed: the border
   /// polygon is never refined and border vertices never move.
   Boundary_rule boundary = Boundary_rule::smooth;
+  /// Vertex → point (read-write; default get(genmesh::vertex_point, g)); it
+  /// must accept the vertices the call adds.
+  VertexPointMap vertex_point_map = {};
 };
 
 namespace detail::subdivision {
@@ -176,9 +180,9 @@ Polygon_soup sqrt3_level(const Snapshot& s, bool refine_border, V&& vis = {}) {
 /// Applies options.iterations levels of √3 subdivision to the triangle mesh
 /// g. Throws genmesh::invalid_input naming the first non-triangle face, g
 /// unchanged, when g is not a triangle mesh or options.iterations < 0.
-template <class G, class Visitor = Mutation_visitor>
+template <class G, class VertexPointMap = Default_map, class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result sqrt3_subdivision(G& g, const Sqrt3_options& options = {}, Visitor&& visitor = {}) {
+Subdivision_result sqrt3_subdivision(G& g, const Sqrt3_options<VertexPointMap>& options = {}, Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
   visitor.on_started(std::as_const(g));
   std::vector<double> none;
@@ -187,7 +191,7 @@ Subdivision_result sqrt3_subdivision(G& g, const Sqrt3_options& options = {}, Vi
       [&](const ds::Snapshot& s, int i) {
         return ds::Refined{ds::sqrt3_level(s, options.boundary == Boundary_rule::smooth && i % 2 == 1, visitor), {}};
       },
-      ds::no_half, visitor);
+      ds::no_half, visitor, options.vertex_point_map);
   visitor.on_finished(std::as_const(g));
   return r;
 }

@@ -1,9 +1,9 @@
 // genmesh/subdivision/types.h — the public vocabulary shared by the
-// subdivision schemes: the border rule and the result of a call.
+// subdivision schemes: the border rule, the "map not given" marker of the
+// options, and the result of a call.
 #pragma once
 
 #include <cstddef>
-#include <vector>
 
 namespace genmesh {
 
@@ -13,14 +13,15 @@ enum class Boundary_rule {
   fixed,  ///< border vertices keep their positions; new border points are edge midpoints
 };
 
+/// The type of an option's property map left out: the scheme uses its
+/// default (no creases, no corners).
+struct Default_map {};
+
 /// What a subdivision did.
 struct Subdivision_result {
   int levels_done = 0;        ///< levels applied
   std::size_t vertices = 0;   ///< live counts after the last level
   std::size_t faces = 0;
-  /// With creases given: the sharpness of every edge of the result, in edge
-  /// iteration order (feed it to the next call); empty otherwise.
-  std::vector<double> edge_sharpness;
 };
 
 } // namespace genmesh

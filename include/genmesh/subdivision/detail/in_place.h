@@ -58,6 +58,7 @@
 #include <algorithm>
 #include <array>
 #include <span>
+#include <type_traits>
 
 namespace genmesh {
 
@@ -362,7 +363,7 @@ void write_old_positions(const G& g, Pts& pts, const std::vector<Eigen::Vector3d
   for (auto v : vertices(g)) {
     const auto i = static_cast<std::size_t>(get(vi, v));
     if (i >= acc.size()) break; // appended: iteration is by increasing index
-    put(pts, v, from_eigen<point_t<G>>(acc[i]));
+    put(pts, v, from_eigen<map_point_t<Pts>>(acc[i]));
   }
 }
 
@@ -541,7 +542,7 @@ void interpolating_one_to_four_level(G& g, const std::array<std::size_t, 4>& n, 
                                      Rule rule) {
   constexpr bool masks = visits_vertex_masks<V>;
   const std::size_t nv = n[0], ne = n[1], nf = n[2];
-  auto pts = get(vertex_point, g);
+  auto pts = refiner.pts;
   auto vi = get(vertex_index, g);
   auto ei = get(edge_index, g);
   std::vector<std::uint32_t> number(index_bound(edge_index, g), k_none), src;
@@ -625,20 +626,23 @@ template <class G, class Av, class Pts>
 struct Appended_points {
   Av av;
   Pts pts;
-  void set(std::size_t i, const Eigen::Vector3d& p) { put(pts, av.vertex(i), from_eigen<point_t<G>>(p)); }
+  void set(std::size_t i, const Eigen::Vector3d& p) { put(pts, av.vertex(i), from_eigen<map_point_t<Pts>>(p)); }
   [[gnu::always_inline]] void add(std::size_t i, double w, const Eigen::Vector3d& p) {
-    if (w != 0) put(pts, av.vertex(i), from_eigen<point_t<G>>(Eigen::Vector3d(to_eigen(get(pts, av.vertex(i))) + w * p)));
+    if (w != 0)
+      put(pts, av.vertex(i), from_eigen<map_point_t<Pts>>(Eigen::Vector3d(to_eigen(get(pts, av.vertex(i))) + w * p)));
   }
 };
 
 /// The bulk path (a MutableFaceGraph without removed elements): elements
-/// appended with append_elements, linked with set_next/set_target/...
+/// appended with append_elements, linked with set_next/set_target/...;
+/// positions through the point map pts.
+template <class Pm>
 struct Bulk_refiner {
+  Pm pts;
   template <class G>
   auto new_points(G& g, std::size_t n) const {
     auto av = append_elements(g, n, 0, 0);
-    auto pts = get(vertex_point, g);
-    return Appended_points<G, decltype(av), decltype(pts)>{std::move(av), pts};
+    return Appended_points<G, decltype(av), Pm>{std::move(av), pts};
   }
   /// Returns the other half of each split edge (empty: edge ne + i).
   template <class G, class Points>
@@ -671,9 +675,10 @@ struct Buffered_points {
 /// native or generic; removed elements allowed): the same refinement as the
 /// bulk path, one operation at a time, each reported to the visitor's
 /// per-operation hooks (on_split_edge, on_split_face).
-template <class V>
+template <class V, class Pm>
 struct Local_refiner {
   V* vis;
+  Pm pts;
 
   template <class G>
   Buffered_points new_points(G&, std::size_t n) const {
@@ -691,7 +696,6 @@ struct Local_refiner {
     using H = halfedge_descriptor_t<G>;
     auto ei = get(edge_index, g);
     auto vi = get(vertex_index, g);
-    auto pts = get(vertex_point, g);
     old_faces.clear();
     for (auto f : faces(g)) old_faces.push_back(f);
     std::vector<H> eh(ne);
@@ -706,7 +710,7 @@ struct Local_refiner {
       // opposite of halfedge(e), so that the old edge keeps its source's half
       const H hn = *genmesh::split_edge(opposite(eh[i], g), g, *vis);
       const auto m = target(hn, g);
-      put(pts, m, from_eigen<point_t<G>>(points.p[i]));
+      put(pts, m, from_eigen<map_point_t<Pm>>(points.p[i]));
       other[i] = static_cast<std::uint32_t>(get(ei, edge(hn, g)));
       made[i] = static_cast<std::uint32_t>(get(vi, m));
     }
@@ -749,7 +753,6 @@ struct Local_refiner {
     std::vector<char> is_new;
     std::vector<face_descriptor_t<G>> old_faces;
     std::vector<std::uint32_t> other = split_all(g, points, ne, number, is_new, old_faces);
-    auto pts = get(vertex_point, g);
     std::vector<halfedge_descriptor_t<G>> xs;
     std::size_t j = 0;
     for (const auto f : old_faces) {
@@ -760,7 +763,7 @@ struct Local_refiner {
       // c → m_t+1; quad n − 1 stays f
       const auto h = *genmesh::split_face(xs[0], xs[2], g, *vis);
       const auto hc = *genmesh::split_edge(opposite(h, g), g, *vis);
-      put(pts, target(hc, g), from_eigen<point_t<G>>(points.p[ne + j]));
+      put(pts, target(hc, g), from_eigen<map_point_t<Pm>>(points.p[ne + j]));
       for (std::size_t t = 1; t + 1 < n; ++t) genmesh::split_face(h, xs[2 * (t + 1)], g, *vis);
       ++j;
     }
@@ -794,67 +797,88 @@ std::array<std::size_t, 4> face_counts(const G& g, const char* scheme, std::size
   return {nv, ne, nf, nc};
 }
 
+/// The creases and corners after the last level, for the limit projection:
+/// sharpness in edge iteration order, corner flags in vertex iteration order
+/// (each empty when not given).
+struct Final_tags {
+  std::vector<double> sharp;
+  std::vector<char> corner;
+};
+
 /// The limit positions after the last level of a smoothing scheme (Loop,
 /// Catmull-Clark): tagged corners stay, border vertices get the border
 /// limit, the others interior(s, v); crease vertices see move_to_limit.
-template <class G, class Interior>
-void move_to_limit(G& g, const Subdivision_result& r, const std::vector<std::uint32_t>& corners,
-                   Boundary_rule boundary, Interior interior) {
-  std::vector<char> corner(r.vertices, 0);
-  for (std::uint32_t c : corners) corner[c] = 1;
-  move_to_limit(g, r.edge_sharpness, [&](const Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
-    if (corner[v]) return s.points[v];
+template <class G, class Interior, class Pm>
+void move_to_limit(G& g, const Final_tags& tags, Boundary_rule boundary, Interior interior, const Pm& pm) {
+  move_to_limit(g, tags.sharp, [&](const Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
+    if (!tags.corner.empty() && tags.corner[v]) return s.points[v];
     if (s.is_border_vertex(v)) return border_limit_point(s, v, boundary);
     return interior(s, v);
-  });
+  }, pm);
 }
 
 inline std::array<std::size_t, 4> one_to_four_counts(std::array<std::size_t, 4> n) {
   return {n[0] + n[1], 2 * n[1] + 3 * n[2], 4 * n[2], 12 * n[2]};
 }
 
+/// The crease map's sharpness by edge index (empty when no map is given).
+/// Throws genmesh::invalid_input naming the edge (iteration order) for a
+/// negative or NaN sharpness.
+template <class G, class CreaseMap>
+std::vector<double> read_sharpness(const G& g, const CreaseMap& crease_map, const char* scheme) {
+  if constexpr (std::is_same_v<CreaseMap, Default_map>) {
+    return {};
+  } else {
+    auto ei = get(edge_index, g);
+    std::vector<double> sharp(index_bound(edge_index, g), 0.0);
+    std::size_t k = 0;
+    for (auto e : edges(g)) {
+      const double s = static_cast<double>(get(crease_map, e));
+      if (!(s >= 0))
+        throw invalid_input(std::string(scheme) + ": crease_map gives edge " + std::to_string(k) +
+                            " a negative or NaN sharpness (the mesh is unchanged)");
+      sharp[static_cast<std::size_t>(get(ei, e))] = s;
+      ++k;
+    }
+    return sharp;
+  }
+}
+
+/// The vertices the corner map tags, as vertex indices.
+template <class G, class CornerMap>
+std::vector<std::uint32_t> read_corners(const G& g, const CornerMap& corner_map) {
+  std::vector<std::uint32_t> out;
+  if constexpr (!std::is_same_v<CornerMap, Default_map>) {
+    auto vi = get(vertex_index, g);
+    for (auto v : vertices(g))
+      if (static_cast<bool>(get(corner_map, v))) out.push_back(static_cast<std::uint32_t>(get(vi, v)));
+  }
+  return out;
+}
+
 /// Runs `iterations` levels of scheme on g, in place: level(g, counts,
-/// sharp, corners, refiner) per level, with the Bulk_refiner when g is a
-/// MutableFaceGraph without removed elements (arrays reserved once to the
-/// last level's size), else the Local_refiner. check(g) throws (g untouched)
-/// before anything changes; grow(counts) gives the counts after one level.
-/// sharp (edge iteration order) and corners (vertex iteration numbers) are
-/// handed to the levels by index.
-template <class G, class Check, class Level, class V>
-Subdivision_result run_in_place(G& g, int iterations, const char* scheme, std::vector<double> sharp,
-                                const std::vector<std::uint32_t>& corners, Check check, Level level,
-                                std::array<std::size_t, 4> (*grow)(std::array<std::size_t, 4>), V& vis) {
+/// sharp, corners, refiner) per level (sharp by edge index, corners as
+/// vertex indices), with the Bulk_refiner when g is a MutableFaceGraph
+/// without removed elements (arrays reserved once to the last level's
+/// size), else the Local_refiner. check(g) throws (g untouched) before
+/// anything changes; grow(counts) gives the counts after one level. The
+/// crease map receives the sharpness of every edge of the result; tags (if
+/// given) what the limit projection needs.
+template <class G, class CreaseMap, class CornerMap, class Pm, class Check, class Level, class V>
+Subdivision_result run_in_place(G& g, int iterations, const char* scheme, const CreaseMap& crease_map,
+                                const CornerMap& corner_map, const Pm& point_map, Check check, Level level,
+                                std::array<std::size_t, 4> (*grow)(std::array<std::size_t, 4>), V& vis,
+                                Final_tags* tags = nullptr) {
   if (iterations < 0) throw invalid_input(std::string(scheme) + ": iterations must be ≥ 0");
-  std::size_t nv = 0, ne = 0;
-  for (auto v : vertices(g)) (void)v, ++nv;
-  for (auto e : edges(g)) (void)e, ++ne;
-  for (std::uint32_t c : corners)
-    if (c >= nv)
-      throw invalid_input(std::string(scheme) + ": corner vertex " + std::to_string(c) + " is out of range (" +
-                          std::to_string(nv) + " vertices)");
-  check_creases(sharp, ne, scheme);
-  Subdivision_result r{0, nv, 0, {}};
+  std::vector<double> sharp = read_sharpness(g, crease_map, scheme);
+  Subdivision_result r{0, 0, 0};
+  for (auto v : vertices(g)) (void)v, ++r.vertices;
   if (iterations == 0) {
     for (auto f : faces(g)) (void)f, ++r.faces;
-    r.edge_sharpness = std::move(sharp);
     return r;
   }
   const std::array<std::size_t, 4> counts = check(g); // V, E, F, corners
-  auto ei = get(edge_index, g);
-  if (!sharp.empty()) { // by edge index
-    std::vector<double> by_index(index_bound(edge_index, g), 0.0);
-    std::size_t k = 0;
-    for (auto e : edges(g)) by_index[static_cast<std::size_t>(get(ei, e))] = sharp[k++];
-    sharp = std::move(by_index);
-  }
-  std::vector<std::uint32_t> corner_index;
-  if (!corners.empty()) {
-    std::vector<std::uint32_t> index_of;
-    index_of.reserve(nv);
-    auto vi = get(vertex_index, g);
-    for (auto v : vertices(g)) index_of.push_back(static_cast<std::uint32_t>(get(vi, v)));
-    for (std::uint32_t c : corners) corner_index.push_back(index_of[c]);
-  }
+  const std::vector<std::uint32_t> corner_index = read_corners(g, corner_map);
   const auto total = static_cast<std::size_t>(iterations);
   std::array<std::size_t, 4> now = counts;
   auto run = [&](const auto& refiner) {
@@ -875,19 +899,27 @@ Subdivision_result run_in_place(G& g, int iterations, const char* scheme, std::v
       reserve(g, static_cast<typename boost::graph_traits<G>::vertices_size_type>(last[0]),
               static_cast<typename boost::graph_traits<G>::edges_size_type>(last[1]),
               static_cast<typename boost::graph_traits<G>::faces_size_type>(last[2]));
-      run(Bulk_refiner{});
+      run(Bulk_refiner<decltype(point_map_of(g, point_map))>{point_map_of(g, point_map)});
     }
   }
-  if (!bulk) run(Local_refiner<V>{&vis});
+  if (!bulk) run(Local_refiner<V, decltype(point_map_of(g, point_map))>{&vis, point_map_of(g, point_map)});
   r.vertices = now[0];
   r.faces = now[2];
-  if (!sharp.empty()) { // back to edge iteration order
-    std::vector<double> ordered;
-    ordered.reserve(now[1]);
-    for (auto e : edges(g)) ordered.push_back(sharp[static_cast<std::size_t>(get(ei, e))]);
-    sharp = std::move(ordered);
+  if constexpr (!std::is_same_v<CreaseMap, Default_map>) { // the refined mesh's sharpness, edge by edge
+    CreaseMap out = crease_map; // a property map is a handle: writes reach the caller's storage
+    auto ei = get(edge_index, g);
+    for (auto e : edges(g)) {
+      const double s = sharp[static_cast<std::size_t>(get(ei, e))];
+      put(out, e, s);
+      if (tags) tags->sharp.push_back(s);
+    }
   }
-  r.edge_sharpness = std::move(sharp);
+  if (tags && !corner_index.empty()) {
+    std::vector<char> is_corner(index_bound(vertex_index, g), 0);
+    for (std::uint32_t c : corner_index) is_corner[c] = 1;
+    auto vi = get(vertex_index, g);
+    for (auto v : vertices(g)) tags->corner.push_back(is_corner[static_cast<std::size_t>(get(vi, v))]);
+  }
   return r;
 }
 
