@@ -967,18 +967,25 @@ TYPED_TEST(Subdivision, TaggedCornersStay) {
 // copy), with the same result as the mesh without that vertex, creases
 // included; every scheme reports live counts (with iterations = 0 too).
 
+// The mesh of soup plus one isolated vertex, removed (not collected).
+template <class G>
+G mesh_with_a_removed_vertex(const Polygon_soup& soup) {
+  Polygon_soup extra = soup;
+  extra.add_point(9, 9, 9);
+  auto g = mesh_of<G>(extra);
+  typename boost::graph_traits<G>::vertex_descriptor last{};
+  for (auto v : vertices(g)) last = v;
+  remove_vertex(last, g);
+  return g;
+}
+
 TYPED_TEST(Subdivision, EverySchemeOnAMeshWithARemovedVertexCountsLiveElements) {
   for (Scheme scheme : all_schemes)
     for (int levels : {0, 2}) {
       SCOPED_TRACE(name(scheme) + " x" + std::to_string(levels));
       const Polygon_soup soup =
           takes_triangles_only(scheme) ? genmesh::make_grid_with_hole(5) : genmesh::make_torus(8, 6, false);
-      Polygon_soup extra = soup;
-      extra.add_point(9, 9, 9); // isolated, removed below
-      auto g = mesh_of<TypeParam>(extra);
-      typename boost::graph_traits<TypeParam>::vertex_descriptor last{};
-      for (auto v : vertices(g)) last = v;
-      remove_vertex(last, g);
+      auto g = mesh_with_a_removed_vertex<TypeParam>(soup);
       auto clean = mesh_of<TypeParam>(soup);
       const genmesh::Subdivision_result a = run(scheme, g, levels), b = run(scheme, clean, levels);
       std::size_t live = 0;
@@ -996,12 +1003,7 @@ TYPED_TEST(Subdivision, MeshWithRemovedElementsKeepsItsCreases) {
   for (bool loop : {true, false}) {
     SCOPED_TRACE(loop ? "Loop" : "Catmull-Clark");
     const Polygon_soup soup = loop ? genmesh::make_grid_with_hole(5) : genmesh::make_torus(8, 6, false);
-    Polygon_soup extra = soup;
-    extra.add_point(9, 9, 9); // isolated, removed below
-    auto g = mesh_of<TypeParam>(extra);
-    typename boost::graph_traits<TypeParam>::vertex_descriptor last{};
-    for (auto v : vertices(g)) last = v;
-    remove_vertex(last, g);
+    auto g = mesh_with_a_removed_vertex<TypeParam>(soup);
     auto clean = mesh_of<TypeParam>(soup);
     const auto sharp = sharpness_where(clean, [](std::size_t v) { return v < 6; }, 3.5);
     genmesh::Subdivision_result a, b;
