@@ -16,6 +16,8 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
 
+#include <boost/property_map/vector_property_map.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -112,6 +114,35 @@ std::size_t count_edges(const G& g) {
 
 template <class G, class Pick>
 std::vector<double> sharpness_where(const G& g, Pick pick, double value);
+
+// A crease map of g (genmesh::make_crease_map) holding sharp, given in edge
+// iteration order (empty: all 0).
+template <class G>
+auto crease_map_of(const G& g, const std::vector<double>& sharp) {
+  auto m = genmesh::make_crease_map(g);
+  std::size_t k = 0;
+  if (!sharp.empty())
+    for (auto e : edges(g)) put(m, e, sharp.at(k++));
+  return m;
+}
+
+// A crease map's values in edge iteration order.
+template <class G, class M>
+std::vector<double> sharpness_of(const G& g, const M& m) {
+  std::vector<double> out;
+  for (auto e : edges(g)) out.push_back(get(m, e));
+  return out;
+}
+
+// A corner map of g tagging the vertices with these iteration numbers.
+template <class G>
+auto corner_map_of(const G& g, const std::vector<std::uint32_t>& numbers) {
+  auto m = genmesh::make_corner_map(g);
+  std::vector<typename boost::graph_traits<G>::vertex_descriptor> vs;
+  for (auto v : vertices(g)) vs.push_back(v);
+  for (std::uint32_t n : numbers) put(m, vs.at(n), 1);
+  return m;
+}
 
 template <class T>
 class Subdivision : public ::testing::Test {};
@@ -326,11 +357,15 @@ TYPED_TEST(Subdivision, OneCallOfTwoLevelsEqualsTwoCallsOfOne) {
   const Polygon_soup torus = genmesh::make_torus(8, 6, true);
   auto one = mesh_of<TypeParam>(torus), two = mesh_of<TypeParam>(torus);
   const auto sharp = sharpness_where(one, [](std::size_t v) { return v < 6; }, 1.5);
-  const auto r1 = genmesh::loop_subdivision(one, {.iterations = 2, .crease_sharpness = sharp});
-  const auto r2a = genmesh::loop_subdivision(two, {.iterations = 1, .crease_sharpness = sharp});
-  const auto r2b = genmesh::loop_subdivision(two, {.iterations = 1, .crease_sharpness = r2a.edge_sharpness});
+  auto m1 = crease_map_of(one, sharp), m2 = crease_map_of(two, sharp);
+  genmesh::loop_subdivision(one, genmesh::Loop_options{.iterations = 2, .crease_map = m1});
+  // the map carries the sharpness over by itself: the same map, level after level
+  genmesh::loop_subdivision(two, genmesh::Loop_options{.iterations = 1, .crease_map = m2});
+  genmesh::loop_subdivision(two, genmesh::Loop_options{.iterations = 1, .crease_map = m2});
   EXPECT_EQ(genmesh::to_soup(one), genmesh::to_soup(two));
-  EXPECT_EQ(r1.edge_sharpness, r2b.edge_sharpness);
+  const std::vector<double> after = sharpness_of(one, m1);
+  EXPECT_EQ(after, sharpness_of(two, m2));
+  EXPECT_EQ(std::count(after.begin(), after.end(), 0.0), static_cast<std::ptrdiff_t>(after.size())); // 1.5 → 0.5 → 0
 }
 
 TYPED_TEST(Subdivision, EmptyMeshStaysEmpty) {
@@ -636,13 +671,15 @@ TYPED_TEST(Subdivision, SharpCreasesFollowTheBSplineOfTheirControlPolygon) {
     auto g = mesh_of<TypeParam>(torus);
     const auto sharp = sharpness_where(g, [&](std::size_t v) { return v < std::size_t(sides); }, inf);
     ASSERT_EQ(std::count(sharp.begin(), sharp.end(), inf), sides);
-    const auto r = triangles ? genmesh::loop_subdivision(g, {.iterations = 2, .crease_sharpness = sharp})
-                             : genmesh::catmull_clark_subdivision(g, {.iterations = 2, .crease_sharpness = sharp});
-    ASSERT_EQ(r.edge_sharpness.size(), static_cast<std::size_t>(num_edges(g)));
-    EXPECT_EQ(std::count(r.edge_sharpness.begin(), r.edge_sharpness.end(), inf), 4 * sides);
+    auto m = crease_map_of(g, sharp);
+    if (triangles) genmesh::loop_subdivision(g, genmesh::Loop_options{.iterations = 2, .crease_map = m});
+    else genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.iterations = 2, .crease_map = m});
+    const std::vector<double> after = sharpness_of(g, m);
+    ASSERT_EQ(after.size(), static_cast<std::size_t>(num_edges(g)));
+    EXPECT_EQ(std::count(after.begin(), after.end(), inf), 4 * sides);
     EXPECT_TRUE(genmesh::check_mesh(g).ok());
     std::vector<Eigen::Vector3d> ring(torus.points.begin(), torus.points.begin() + sides);
-    expect_same_point_sets(crease_points(g, r.edge_sharpness), bspline(ring, 2), 1e-12);
+    expect_same_point_sets(crease_points(g, after), bspline(ring, 2), 1e-12);
   }
 }
 
@@ -651,8 +688,9 @@ TYPED_TEST(Subdivision, SharpCubeEdgesStayStraight) {
   // and every crease vertex stays on its cube edge (two coordinates at ±1).
   auto g = mesh_of<TypeParam>(genmesh::make_cube());
   const std::vector<double> sharp(12, inf);
-  const auto r = genmesh::catmull_clark_subdivision(g, {.iterations = 3, .crease_sharpness = sharp});
-  const auto pts = crease_points(g, r.edge_sharpness);
+  auto m = crease_map_of(g, sharp);
+  genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.iterations = 3, .crease_map = m});
+  const auto pts = crease_points(g, sharpness_of(g, m));
   EXPECT_EQ(pts.size(), 8u + 12u * 7u); // corners + 7 new points per cube edge
   for (const auto& p : pts) {
     int at_bound = 0;
@@ -679,8 +717,8 @@ TYPED_TEST(Subdivision, SemiSharpCreasesBlendAndDecrement) {
     for (double s : {0.0, inf, 0.5}) {
       auto g = mesh_of<TypeParam>(torus);
       const auto sharp = sharpness_where(g, [](std::size_t v) { return v < 6; }, s);
-      if (triangles) genmesh::loop_subdivision(g, {.iterations = 1, .crease_sharpness = sharp});
-      else genmesh::catmull_clark_subdivision(g, {.iterations = 1, .crease_sharpness = sharp});
+      if (triangles) genmesh::loop_subdivision(g, genmesh::Loop_options{.crease_map = crease_map_of(g, sharp)});
+      else genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.crease_map = crease_map_of(g, sharp)});
       out.push_back(genmesh::to_soup(g));
     }
     std::size_t differ = 0;
@@ -691,11 +729,12 @@ TYPED_TEST(Subdivision, SemiSharpCreasesBlendAndDecrement) {
     EXPECT_GT(differ, 0u);
     auto g = mesh_of<TypeParam>(torus);
     const auto sharp = sharpness_where(g, [](std::size_t v) { return v < 6; }, 1.5);
-    const auto r = triangles ? genmesh::loop_subdivision(g, {.iterations = 1, .crease_sharpness = sharp})
-                             : genmesh::catmull_clark_subdivision(g, {.iterations = 1, .crease_sharpness = sharp});
-    EXPECT_EQ(std::count(r.edge_sharpness.begin(), r.edge_sharpness.end(), 0.5), 12);
-    EXPECT_EQ(std::count(r.edge_sharpness.begin(), r.edge_sharpness.end(), 0.0),
-              static_cast<std::ptrdiff_t>(r.edge_sharpness.size()) - 12);
+    auto m = crease_map_of(g, sharp);
+    if (triangles) genmesh::loop_subdivision(g, genmesh::Loop_options{.crease_map = m});
+    else genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.crease_map = m});
+    const std::vector<double> after = sharpness_of(g, m);
+    EXPECT_EQ(std::count(after.begin(), after.end(), 0.5), 12);
+    EXPECT_EQ(std::count(after.begin(), after.end(), 0.0), static_cast<std::ptrdiff_t>(after.size()) - 12);
   }
 }
 
@@ -715,17 +754,22 @@ TYPED_TEST(Subdivision, CreasesByVertexPairs) {
     ++i;
   }
   EXPECT_EQ(sharp, expected);
+  EXPECT_EQ(sharpness_of(g, genmesh::crease_map(g, std::span<const genmesh::Crease>(c))), expected);
   EXPECT_EQ(std::count(sharp.begin(), sharp.end(), 0.0), 8);
   const std::vector<genmesh::Crease> diagonal = {{0, 3, 1.0}}; // not an edge
   EXPECT_THROW(genmesh::crease_sharpness(g, std::span<const genmesh::Crease>(diagonal)), genmesh::invalid_input);
 }
 
-TYPED_TEST(Subdivision, CreaseVectorOfTheWrongSizeIsRefused) {
-  auto g = mesh_of<TypeParam>(genmesh::make_cube());
-  const Polygon_soup before = genmesh::to_soup(g);
-  EXPECT_THROW(genmesh::catmull_clark_subdivision(g, {.crease_sharpness = std::vector<double>(11, 1.0)}),
-               genmesh::invalid_input);
-  EXPECT_EQ(genmesh::to_soup(g), before);
+TYPED_TEST(Subdivision, NegativeOrNanSharpnessIsRefused) {
+  for (double bad : {-1.0, std::nan("")}) {
+    auto g = mesh_of<TypeParam>(genmesh::make_cube());
+    const Polygon_soup before = genmesh::to_soup(g);
+    auto m = genmesh::make_crease_map(g);
+    put(m, *std::next(edges(g).begin(), 5), bad);
+    EXPECT_THROW(genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.crease_map = m}),
+                 genmesh::invalid_input);
+    EXPECT_EQ(genmesh::to_soup(g), before);
+  }
 }
 
 } // namespace
@@ -762,8 +806,12 @@ TYPED_TEST(Subdivision, LimitPositionsAreInvariantUnderSubdivision) {
       auto g = mesh_of<TypeParam>(k.soup);
       const auto sharp = k.crease_ring ? sharpness_where(g, [](std::size_t v) { return v < 6; }, inf)
                                        : std::vector<double>{};
-      if (k.loop) genmesh::loop_subdivision(g, {.iterations = levels, .crease_sharpness = sharp, .limit = true});
-      else genmesh::catmull_clark_subdivision(g, {.iterations = levels, .crease_sharpness = sharp, .limit = true});
+      if (k.loop)
+        genmesh::loop_subdivision(
+            g, genmesh::Loop_options{.iterations = levels, .crease_map = crease_map_of(g, sharp), .limit = true});
+      else
+        genmesh::catmull_clark_subdivision(
+            g, genmesh::Catmull_clark_options{.iterations = levels, .crease_map = crease_map_of(g, sharp), .limit = true});
       out.push_back(genmesh::to_soup(g));
       if (levels == 1) old_vertices = out.back().num_points();
     }
@@ -794,25 +842,31 @@ namespace {
 
 double linear(const Eigen::Vector3d& p) { return 2.0 * p.x() - 3.0 * p.y() + 0.5 * p.z() + 1.0; }
 
-struct Scalar_transport {
+struct Scalar_transport : genmesh::Mutation_visitor {
   std::vector<double> value, next;
-  std::size_t calls = 0;
+  std::size_t calls = 0, steps = 0;
+  int started = 0, finished = 0;
   double worst_weight_sum = 0;
-  genmesh::Subdivision_visitor visitor() {
-    return {
-        .on_level_begin = [this](int, std::size_t, std::size_t n) { next.assign(n, std::nan("")); },
-        .on_vertex =
-            [this](std::uint32_t v, std::span<const std::uint32_t> src, std::span<const double> w) {
-              double x = 0, sum = 0;
-              for (std::size_t i = 0; i < src.size(); ++i) x += w[i] * value.at(src[i]), sum += w[i];
-              worst_weight_sum = std::max(worst_weight_sum, std::abs(sum - 1.0));
-              next.at(v) = x;
-              ++calls;
-            },
-        .on_level_end = [this](int) { value.swap(next); },
-    };
+  void on_started(const auto&) { ++started; }
+  void on_finished(const auto&) { ++finished; }
+  void on_step(std::string_view step, std::size_t done, std::size_t total) {
+    EXPECT_EQ(step, "level");
+    EXPECT_EQ(done, steps++);
+    EXPECT_LE(done, total);
+    if (done > 0) value.swap(next); // level done - 1 is complete
+    next.clear();
+  }
+  void on_vertex_mask(std::uint32_t v, std::span<const std::uint32_t> src, std::span<const double> w) {
+    double x = 0, sum = 0;
+    for (std::size_t i = 0; i < src.size(); ++i) x += w[i] * value.at(src[i]), sum += w[i];
+    worst_weight_sum = std::max(worst_weight_sum, std::abs(sum - 1.0));
+    if (next.size() <= v) next.resize(v + 1, std::nan(""));
+    next[v] = x;
+    ++calls;
   }
 };
+static_assert(genmesh::visits_vertex_masks<Scalar_transport&>);
+static_assert(!genmesh::visits_vertex_masks<genmesh::Mutation_visitor>);
 
 TYPED_TEST(Subdivision, VisitorMasksCarryAttributesLikePositions) {
   Polygon_soup bumpy = genmesh::make_grid_with_hole(5);
@@ -836,23 +890,32 @@ TYPED_TEST(Subdivision, VisitorMasksCarryAttributesLikePositions) {
           const std::vector<std::uint32_t> corners = creases ? std::vector<std::uint32_t>{7} : std::vector<std::uint32_t>{};
           switch (scheme) {
           case Scheme::loop:
-            genmesh::loop_subdivision(
-                g, {.iterations = 2, .crease_sharpness = sharp, .corners = corners, .visitor = t.visitor()});
+            genmesh::loop_subdivision(g,
+                                      genmesh::Loop_options{.iterations = 2,
+                                                            .crease_map = crease_map_of(g, sharp),
+                                                            .corner_map = corner_map_of(g, corners)},
+                                      t);
             break;
           case Scheme::catmull_clark:
-            genmesh::catmull_clark_subdivision(
-                g, {.iterations = 2, .crease_sharpness = sharp, .corners = corners, .visitor = t.visitor()});
+            genmesh::catmull_clark_subdivision(g,
+                                               genmesh::Catmull_clark_options{.iterations = 2,
+                                                                              .crease_map = crease_map_of(g, sharp),
+                                                                              .corner_map = corner_map_of(g, corners)},
+                                               t);
             break;
-          case Scheme::butterfly: genmesh::butterfly_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
+          case Scheme::butterfly: genmesh::butterfly_subdivision(g, {.iterations = 2}, t); break;
           // two levels: the second refines √3's border (the (16, 10, 1) and (4, 19, 4) masks)
-          case Scheme::sqrt3: genmesh::sqrt3_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
-          case Scheme::doo_sabin: genmesh::doo_sabin_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
-          default: genmesh::midpoint_subdivision(g, {.iterations = 2, .visitor = t.visitor()}); break;
+          case Scheme::sqrt3: genmesh::sqrt3_subdivision(g, {.iterations = 2}, t); break;
+          case Scheme::doo_sabin: genmesh::doo_sabin_subdivision(g, {.iterations = 2}, t); break;
+          default: genmesh::midpoint_subdivision(g, {.iterations = 2}, t); break;
           }
           return t;
         };
         auto g = mesh_of<TypeParam>(soup);
         const Scalar_transport t = run_on(g);
+        EXPECT_EQ(t.started, 1);
+        EXPECT_EQ(t.finished, 1);
+        EXPECT_EQ(t.steps, 3u); // done = 0, 1, 2
         const Polygon_soup out = genmesh::to_soup(g);
         ASSERT_EQ(t.value.size(), out.num_points());
         EXPECT_GT(t.calls, out.num_points());
@@ -866,7 +929,7 @@ TYPED_TEST(Subdivision, VisitorMasksCarryAttributesLikePositions) {
 
 // ---------------------------------------------------------------------------
 // Tagged corners stay where they are at every level, interior or on the
-// border; out-of-range corners are refused with the mesh unchanged.
+// border; an untagged vertex of the corner map moves as without the map.
 
 TYPED_TEST(Subdivision, TaggedCornersStay) {
   for (bool loop : {true, false}) {
@@ -878,10 +941,11 @@ TYPED_TEST(Subdivision, TaggedCornersStay) {
     auto g = mesh_of<TypeParam>(bumpy);
     auto plain = mesh_of<TypeParam>(bumpy);
     if (loop) {
-      genmesh::loop_subdivision(g, {.iterations = 2, .corners = corners});
+      genmesh::loop_subdivision(g, genmesh::Loop_options{.iterations = 2, .corner_map = corner_map_of(g, corners)});
       genmesh::loop_subdivision(plain, {.iterations = 2});
     } else {
-      genmesh::catmull_clark_subdivision(g, {.iterations = 2, .corners = corners});
+      genmesh::catmull_clark_subdivision(
+          g, genmesh::Catmull_clark_options{.iterations = 2, .corner_map = corner_map_of(g, corners)});
       genmesh::catmull_clark_subdivision(plain, {.iterations = 2});
     }
     const Polygon_soup out = genmesh::to_soup(g), moved = genmesh::to_soup(plain);
@@ -891,39 +955,65 @@ TYPED_TEST(Subdivision, TaggedCornersStay) {
     }
     EXPECT_TRUE(genmesh::check_mesh(g).ok());
     auto h = mesh_of<TypeParam>(bumpy);
-    const Polygon_soup before = genmesh::to_soup(h);
-    const std::vector<std::uint32_t> bad = {static_cast<std::uint32_t>(bumpy.num_points())};
-    if (loop) EXPECT_THROW(genmesh::loop_subdivision(h, {.corners = bad}), genmesh::invalid_input);
-    else EXPECT_THROW(genmesh::catmull_clark_subdivision(h, {.corners = bad}), genmesh::invalid_input);
-    EXPECT_EQ(genmesh::to_soup(h), before);
+    if (loop) genmesh::loop_subdivision(h, genmesh::Loop_options{.iterations = 2, .corner_map = corner_map_of(h, {})});
+    else genmesh::catmull_clark_subdivision(h, genmesh::Catmull_clark_options{.iterations = 2, .corner_map = corner_map_of(h, {})});
+    EXPECT_EQ(genmesh::to_soup(h), moved);
   }
 }
 
 // ---------------------------------------------------------------------------
 // A mesh with removed elements (here an isolated vertex removed, not yet
-// collected) cannot be refined in place; it is refined on a Halfedge_mesh copy
-// and rebuilt, with the same result as the mesh without that vertex, creases
-// included.
+// collected) is refined through the local operations on the mesh itself (no
+// copy), with the same result as the mesh without that vertex, creases
+// included; every scheme reports live counts (with iterations = 0 too).
 
-TYPED_TEST(Subdivision, MeshWithRemovedElementsIsRefinedThroughACopy) {
+// The mesh of soup plus one isolated vertex, removed (not collected).
+template <class G>
+G mesh_with_a_removed_vertex(const Polygon_soup& soup) {
+  Polygon_soup extra = soup;
+  extra.add_point(9, 9, 9);
+  auto g = mesh_of<G>(extra);
+  typename boost::graph_traits<G>::vertex_descriptor last{};
+  for (auto v : vertices(g)) last = v;
+  remove_vertex(last, g);
+  return g;
+}
+
+TYPED_TEST(Subdivision, EverySchemeOnAMeshWithARemovedVertexCountsLiveElements) {
+  for (Scheme scheme : all_schemes)
+    for (int levels : {0, 2}) {
+      SCOPED_TRACE(name(scheme) + " x" + std::to_string(levels));
+      const Polygon_soup soup =
+          takes_triangles_only(scheme) ? genmesh::make_grid_with_hole(5) : genmesh::make_torus(8, 6, false);
+      auto g = mesh_with_a_removed_vertex<TypeParam>(soup);
+      auto clean = mesh_of<TypeParam>(soup);
+      const genmesh::Subdivision_result a = run(scheme, g, levels), b = run(scheme, clean, levels);
+      std::size_t live = 0;
+      for (auto v : vertices(g)) (void)v, ++live;
+      EXPECT_EQ(a.vertices, live);
+      EXPECT_EQ(a.vertices, b.vertices);
+      EXPECT_EQ(a.faces, b.faces);
+      EXPECT_EQ(a.levels_done, levels);
+      EXPECT_TRUE(genmesh::check_mesh(g).ok());
+      EXPECT_EQ(genmesh::canonical(genmesh::to_soup(g)), genmesh::canonical(genmesh::to_soup(clean)));
+    }
+}
+
+TYPED_TEST(Subdivision, MeshWithRemovedElementsKeepsItsCreases) {
   for (bool loop : {true, false}) {
     SCOPED_TRACE(loop ? "Loop" : "Catmull-Clark");
     const Polygon_soup soup = loop ? genmesh::make_grid_with_hole(5) : genmesh::make_torus(8, 6, false);
-    Polygon_soup extra = soup;
-    extra.add_point(9, 9, 9); // isolated, removed below
-    auto g = mesh_of<TypeParam>(extra);
-    typename boost::graph_traits<TypeParam>::vertex_descriptor last{};
-    for (auto v : vertices(g)) last = v;
-    remove_vertex(last, g);
+    auto g = mesh_with_a_removed_vertex<TypeParam>(soup);
     auto clean = mesh_of<TypeParam>(soup);
     const auto sharp = sharpness_where(clean, [](std::size_t v) { return v < 6; }, 3.5);
     genmesh::Subdivision_result a, b;
+    auto mg = crease_map_of(g, sharp), mc = crease_map_of(clean, sharp);
     if (loop) {
-      a = genmesh::loop_subdivision(g, {.iterations = 2, .crease_sharpness = sharp});
-      b = genmesh::loop_subdivision(clean, {.iterations = 2, .crease_sharpness = sharp});
+      a = genmesh::loop_subdivision(g, genmesh::Loop_options{.iterations = 2, .crease_map = mg});
+      b = genmesh::loop_subdivision(clean, genmesh::Loop_options{.iterations = 2, .crease_map = mc});
     } else {
-      a = genmesh::catmull_clark_subdivision(g, {.iterations = 2, .crease_sharpness = sharp});
-      b = genmesh::catmull_clark_subdivision(clean, {.iterations = 2, .crease_sharpness = sharp});
+      a = genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.iterations = 2, .crease_map = mg});
+      b = genmesh::catmull_clark_subdivision(clean, genmesh::Catmull_clark_options{.iterations = 2, .crease_map = mc});
     }
     EXPECT_EQ(a.vertices, b.vertices);
     EXPECT_EQ(a.faces, b.faces);
@@ -948,8 +1038,104 @@ TYPED_TEST(Subdivision, MeshWithRemovedElementsIsRefinedThroughACopy) {
       });
       return out;
     };
-    EXPECT_EQ(creased(g, a.edge_sharpness), creased(clean, b.edge_sharpness));
-    EXPECT_FALSE(creased(g, a.edge_sharpness).empty());
+    EXPECT_EQ(creased(g, sharpness_of(g, mg)), creased(clean, sharpness_of(clean, mc)));
+    EXPECT_FALSE(creased(g, sharpness_of(g, mg)).empty());
+  }
+}
+
+// ---------------------------------------------------------------------------
+// .vertex_point_map: the positions are read and written through the given map
+// (an external map over the vertex index holding twice the mesh's own
+// points), for every scheme, on the in-place paths and the rebuild path: the
+// map ends with exactly twice the positions of a run on the mesh's own points
+// (scaling by 2 is exact), on every backend.
+
+TYPED_TEST(Subdivision, VertexPointMapIsReadAndWritten) {
+  for (Scheme scheme : all_schemes) {
+    if (scheme == Scheme::loop_warren) continue;
+    SCOPED_TRACE(name(scheme));
+    const Polygon_soup soup =
+        takes_triangles_only(scheme) ? genmesh::make_grid_with_hole(5) : genmesh::make_torus(8, 6, false);
+    auto g = mesh_of<TypeParam>(soup), reference = mesh_of<TypeParam>(soup);
+    auto vi = get(genmesh::vertex_index, g);
+    boost::vector_property_map<Eigen::Vector3d, decltype(vi)> twice(
+        static_cast<unsigned>(index_bound(genmesh::vertex_index, g)), vi);
+    auto own = get(genmesh::vertex_point, g);
+    for (auto v : vertices(g)) put(twice, v, Eigen::Vector3d(2.0 * genmesh::to_eigen(get(own, v))));
+    switch (scheme) {
+    case Scheme::loop: genmesh::loop_subdivision(g, genmesh::Loop_options{.iterations = 2, .vertex_point_map = twice}); break;
+    case Scheme::catmull_clark:
+      genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.iterations = 2, .vertex_point_map = twice});
+      break;
+    case Scheme::butterfly:
+      genmesh::butterfly_subdivision(g, genmesh::Butterfly_options{.iterations = 2, .vertex_point_map = twice});
+      break;
+    case Scheme::sqrt3: genmesh::sqrt3_subdivision(g, genmesh::Sqrt3_options{.iterations = 2, .vertex_point_map = twice}); break;
+    case Scheme::doo_sabin:
+      genmesh::doo_sabin_subdivision(g, genmesh::Doo_sabin_options{.iterations = 2, .vertex_point_map = twice});
+      break;
+    default: genmesh::midpoint_subdivision(g, genmesh::Midpoint_options{.iterations = 2, .vertex_point_map = twice}); break;
+    }
+    run(scheme, reference, 2);
+    const Polygon_soup ref = genmesh::to_soup(reference);
+    std::size_t k = 0;
+    for (auto v : vertices(g)) {
+      ASSERT_LT(k, ref.num_points());
+      EXPECT_EQ(get(twice, v), Eigen::Vector3d(2.0 * ref.points[k])) << k;
+      ++k;
+    }
+    EXPECT_EQ(k, ref.num_points());
+    EXPECT_TRUE(genmesh::check_mesh(g).ok());
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Incidence_mesh refines with its own operations, not on a copy: its native
+// split_edge / split_face report to the visitor with Incidence_mesh
+// descriptors (a copy of another type would report nothing), once per old
+// edge and per cut, and the result's incidence matrices still compose to zero.
+
+struct Count_incidence_operations : genmesh::Mutation_visitor {
+  std::size_t splits = 0, cuts = 0;
+  void on_split_edge(genmesh::Halfedge_index, const genmesh_test::Incidence_mesh&) { ++splits; }
+  void on_split_face(genmesh::Halfedge_index, const genmesh_test::Incidence_mesh&) { ++cuts; }
+};
+
+TEST(SubdivisionNative, IncidenceMeshRefinesWithItsOwnOperations) {
+  for (Scheme scheme : {Scheme::loop, Scheme::catmull_clark, Scheme::butterfly, Scheme::midpoint}) {
+    SCOPED_TRACE(name(scheme));
+    const Polygon_soup soup = scheme == Scheme::catmull_clark ? genmesh::make_torus(8, 6, false)
+                                                              : genmesh::make_grid_with_hole(5);
+    auto g = mesh_of<genmesh_test::Incidence_mesh>(soup);
+    std::size_t splits = 0, cuts = 0; // expected: per level, every edge split; every face cut
+    {
+      auto h = mesh_of<genmesh_test::Halfedge_mesh>(soup);
+      for (int level = 0; level < 2; ++level) {
+        splits += static_cast<std::size_t>(num_edges(h));
+        for (auto f : faces(h)) {
+          std::size_t n = 0;
+          auto x = halfedge(f, h);
+          do ++n, x = next(x, h);
+          while (x != halfedge(f, h));
+          if (scheme == Scheme::catmull_clark) splits += 1, cuts += n - 1; // face point on the first cut
+          else cuts += 3;
+        }
+        run(scheme, h, 1);
+      }
+    }
+    Count_incidence_operations c;
+    switch (scheme) {
+    case Scheme::loop: genmesh::loop_subdivision(g, {.iterations = 2}, c); break;
+    case Scheme::catmull_clark: genmesh::catmull_clark_subdivision(g, {.iterations = 2}, c); break;
+    case Scheme::butterfly: genmesh::butterfly_subdivision(g, {.iterations = 2}, c); break;
+    default: genmesh::midpoint_subdivision(g, {.iterations = 2}, c); break;
+    }
+    EXPECT_EQ(c.splits, splits);
+    EXPECT_EQ(c.cuts, cuts);
+    EXPECT_TRUE(genmesh::check_mesh(g).ok());
+    const Eigen::SparseMatrix<int> d0 = g.d0(), d1 = g.d1();
+    EXPECT_EQ(Eigen::SparseMatrix<int>(d1 * d0).norm(), 0);
+    EXPECT_EQ(static_cast<std::size_t>(d0.rows()), static_cast<std::size_t>(num_edges(g)));
   }
 }
 

@@ -299,7 +299,7 @@ int cmd_convert(const Args& a) {
 
 // Reads a crease file: one "u v sharpness" line per edge, u and v input vertex
 // indices, sharpness a number >= 0 or "inf"; '#' starts a comment. Whether
-// u-v is an edge of the mesh is checked by genmesh::crease_sharpness.
+// u-v is an edge of the mesh is checked by genmesh::crease_map.
 std::vector<genmesh::Crease> read_creases(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw genmesh::io_error(path, "cannot open crease file");
@@ -335,56 +335,66 @@ std::vector<genmesh::Crease> read_creases(const std::string& path) {
   return creases;
 }
 
-// One call of the chosen scheme.
-template <class Mesh>
-genmesh::Subdivision_result subdivide_once(Mesh& mesh, const Args& a, int levels,
-                                           std::vector<double> sharpness) {
+// Progress on a terminal, from the visitor's on_step hook.
+struct Subdivide_progress : genmesh::Mutation_visitor {
+  const char* scheme = "";
+  bool show = false;
+  void on_step(std::string_view, std::size_t done, std::size_t total) {
+    if (!show) return;
+    std::fprintf(stderr, "\r%s: %zu/%zu levels", scheme, done, total);
+    if (done == total) std::fprintf(stderr, "\n");
+  }
+};
+
+// One call of the chosen scheme for every level (the library reserves the
+// last level's size once and carries the creases from level to level in the
+// crease map); creases is genmesh::Default_map or a crease map of mesh.
+template <class Mesh, class Creases>
+genmesh::Subdivision_result subdivide_all(Mesh& mesh, const Args& a, const Creases& creases,
+                                          Subdivide_progress& progress) {
   const auto boundary = a.boundary == "fixed" ? genmesh::Boundary_rule::fixed : genmesh::Boundary_rule::smooth;
+  const int levels = a.levels;
   if (a.scheme == "loop")
     return genmesh::loop_subdivision(
-        mesh, {.iterations = levels, .boundary = boundary, .crease_sharpness = std::move(sharpness)});
+        mesh, genmesh::Loop_options{.iterations = levels, .boundary = boundary, .crease_map = creases}, progress);
   if (a.scheme == "catmull-clark")
     return genmesh::catmull_clark_subdivision(
-        mesh, {.iterations = levels, .boundary = boundary, .crease_sharpness = std::move(sharpness)});
+        mesh, genmesh::Catmull_clark_options{.iterations = levels, .boundary = boundary, .crease_map = creases},
+        progress);
   if (a.scheme == "sqrt3")
-    return genmesh::sqrt3_subdivision(mesh, {.iterations = levels, .boundary = boundary});
-  if (a.scheme == "doo-sabin") return genmesh::doo_sabin_subdivision(mesh, {.iterations = levels});
-  if (a.scheme == "butterfly") return genmesh::butterfly_subdivision(mesh, {.iterations = levels});
-  return genmesh::midpoint_subdivision(mesh, {.iterations = levels});
+    return genmesh::sqrt3_subdivision(mesh, {.iterations = levels, .boundary = boundary}, progress);
+  if (a.scheme == "doo-sabin") return genmesh::doo_sabin_subdivision(mesh, {.iterations = levels}, progress);
+  if (a.scheme == "butterfly") return genmesh::butterfly_subdivision(mesh, {.iterations = levels}, progress);
+  return genmesh::midpoint_subdivision(mesh, {.iterations = levels}, progress);
 }
 
 int cmd_subdivide(const Args& a) {
   genmesh::Polygon_soup soup = genmesh::read_soup(a.files[0]);
   const std::vector<genmesh::Crease> creases =
       a.creases.empty() ? std::vector<genmesh::Crease>{} : read_creases(a.creases);
-  const bool progress = !a.json && isatty(STDERR_FILENO);
+  Subdivide_progress progress;
+  progress.scheme = a.scheme.c_str();
+  progress.show = !a.json && isatty(STDERR_FILENO);
   return with_backend(a.backend, [&](auto& mesh) {
     genmesh::build_mesh(soup, mesh, {.repair = a.repair});
-    std::vector<double> sharpness;
-    if (!creases.empty()) {
-      try {
-        sharpness = genmesh::crease_sharpness(mesh, std::span<const genmesh::Crease>(creases));
-      } catch (const genmesh::invalid_input& e) {
-        throw genmesh::io_error(a.creases, e.what());
-      }
-    }
-    const auto t0 = std::chrono::steady_clock::now();
     genmesh::Subdivision_result result;
-    if (a.scheme == "sqrt3") {
-      // √3's border rule alternates within one call: the levels go together.
-      if (progress) std::fprintf(stderr, "sqrt3: %d levels...\n", a.levels);
-      result = subdivide_once(mesh, a, a.levels, {});
+    double seconds = 0;
+    if (creases.empty()) {
+      const auto t0 = std::chrono::steady_clock::now();
+      result = subdivide_all(mesh, a, genmesh::Default_map{}, progress);
+      seconds = seconds_since(t0);
     } else {
-      for (int level = 0; level < a.levels; ++level) {
-        if (progress)
-          std::fprintf(stderr, "\r%s: level %d/%d", a.scheme.c_str(), level + 1, a.levels);
-        result = subdivide_once(mesh, a, 1, std::move(sharpness));
-        sharpness = std::move(result.edge_sharpness);
-      }
-      if (progress) std::fprintf(stderr, "\n");
-      result.levels_done = a.levels;
+      auto crease_map = [&] {
+        try {
+          return genmesh::crease_map(mesh, std::span<const genmesh::Crease>(creases));
+        } catch (const genmesh::invalid_input& e) {
+          throw genmesh::io_error(a.creases, e.what());
+        }
+      }();
+      const auto t0 = std::chrono::steady_clock::now();
+      result = subdivide_all(mesh, a, crease_map, progress);
+      seconds = seconds_since(t0);
     }
-    const double seconds = seconds_since(t0);
     genmesh::Mesh_report report = genmesh::check_mesh(mesh);
     genmesh::write_mesh(a.files[1], mesh, {.binary = a.binary});
     if (a.json) {

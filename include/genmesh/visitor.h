@@ -1,11 +1,13 @@
-// genmesh/visitor.h — the mutation visitor that rides along every local operation.
+// genmesh/visitor.h — the one visitor design of genmesh: observation,
+// progress and attribute transport for every local operation and every
+// algorithm.
 //
-// Every local operation (<genmesh/local_operations.h>) takes an optional
-// visitor and calls the matching hook once, after a successful change (or,
-// for the before_* hooks, just before the change, while the elements that
-// are about to disappear still exist). A refused operation calls no hook.
-// Derive from Mutation_visitor and define the hooks you need with concrete
-// descriptor types; the others stay no-ops and cost nothing:
+// A visitor is a struct deriving from genmesh::Mutation_visitor that defines
+// the hooks it needs (with concrete parameter types, or as templates); the
+// others stay the base's no-ops and cost nothing. Every local operation
+// (<genmesh/local_operations.h>) and every algorithm (subdivision,
+// simplification, remeshing) takes it as its last argument, by reference, so
+// the caller keeps its state:
 //
 //   struct Count_flips : genmesh::Mutation_visitor {
 //     int n = 0;
@@ -13,16 +15,51 @@
 //   };
 //   Count_flips c;
 //   genmesh::flip_edge(h, mesh, c);
+//   genmesh::loop_subdivision(mesh, {.iterations = 3}, c);   // same visitor type
 //
+// Two kinds of hooks:
+// - per operation (on_flip, on_split_edge, before_collapse, ...): called once
+//   after a successful change (or, for before_*, just before it, while the
+//   elements about to disappear still exist); a refused operation calls none.
+//   An algorithm calls them for the local operations it performs through
+//   <genmesh/local_operations.h>; a backend's bulk path (e.g. subdivision's
+//   in-place refinement of Halfedge_mesh) performs none and calls none.
+//   on_vertex_mask is the per-vertex hook of subdivision (attribute transport).
+// - per algorithm: on_started(g) once before the algorithm changes g,
+//   on_step(step, done, total) for progress (called with done = 0 before the
+//   first unit of work and again after each unit, so the last call has done
+//   == total; step names the unit, e.g. "level"), on_finished(g) once after
+//   the last change (not called when the algorithm throws).
 // Hooks receive the mesh as const: they observe and copy attributes (through
 // property maps they hold), they never edit connectivity.
 #pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <type_traits>
 
 namespace genmesh {
 
 /// No-op hooks for every local operation. Each hook is a template so that a
 /// derived visitor may hide just the ones it needs.
 struct Mutation_visitor {
+  /// Once before the algorithm changes g.
+  void on_started(const auto& /*g*/) {}
+  /// Progress: `done` of `total` units named `step` ("level", ...) are done;
+  /// called with done = 0 first and with done == total last.
+  void on_step(std::string_view /*step*/, std::size_t /*done*/, std::size_t /*total*/) {}
+  /// Once after the algorithm's last change to g.
+  void on_finished(const auto& /*g*/) {}
+  /// Subdivision: new vertex `vertex` of the level being refined (numbered in
+  /// the refined mesh's vertex iteration order) is the affine combination,
+  /// weights summing to 1, of the old vertices `sources` (numbered in the old
+  /// mesh's vertex iteration order; a source may repeat: add its weights).
+  /// Called for every vertex of the level, before its topology changes, in
+  /// no promised order. Only computed when a visitor defines this hook.
+  void on_vertex_mask(std::uint32_t /*vertex*/, std::span<const std::uint32_t> /*sources*/,
+                      std::span<const double> /*weights*/) {}
   /// After flip_edge(h) and unflip_edge(h): h is the turned edge's halfedge.
   void on_flip(const auto& /*h*/, const auto& /*g*/) {}
   /// After split_edge(h) and split_edge_and_triangulate(h): hnew is the
@@ -54,5 +91,13 @@ struct Mutation_visitor {
   /// Before remove_face(h): face(h) will disappear.
   void before_remove_face(const auto& /*h*/, const auto& /*g*/) {}
 };
+
+/// Whether visitor type V defines its own on_vertex_mask (then subdivision
+/// computes the masks; otherwise it skips that work).
+template <class V>
+inline constexpr bool visits_vertex_masks =
+    !requires { requires std::is_same_v<decltype(&std::remove_cvref_t<V>::on_vertex_mask),
+                                        void (Mutation_visitor::*)(std::uint32_t, std::span<const std::uint32_t>,
+                                                                   std::span<const double>)>; };
 
 } // namespace genmesh

@@ -22,26 +22,30 @@
 // each from its lowest vertex); old faces keep the middle triangle.
 // Guarantees: identical on every backend; old vertices interpolated exactly;
 // V' = V + E, F' = 4F, Euler characteristic and border loops kept.
-// Attributes: .visitor.on_vertex receives every new vertex's mask (an old
+// Attributes: the visitor's on_vertex_mask receives every new vertex's mask (an old
 // vertex: itself with weight 1; the weights of an edge point sum to 1 and
 // include the negative wing weights).
 // Limits: triangles only (refused, g unchanged); g's other properties are not
 // refined (new elements get their defaults); a backend without set_next, or a
-// mesh with removed elements, is refined on a Halfedge_mesh copy and rebuilt.
+// mesh with removed elements, is refined through the local operations
+// (split_edge, split_face: the backend's own), never on a copy.
 #pragma once
 
 #include <genmesh/subdivision/detail/in_place.h>
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace genmesh {
 
 /// Options of butterfly_subdivision().
+template <class VertexPointMap = Default_map>
 struct Butterfly_options {
   int iterations = 1; ///< levels to apply (≥ 0)
-  /// Attribute transport (masks of every new vertex) and level hooks.
-  Subdivision_visitor visitor = {};
+  /// Vertex → point (read-write; default get(genmesh::vertex_point, g)); it
+  /// must accept the vertices the call adds.
+  VertexPointMap vertex_point_map = {};
 };
 
 namespace detail::subdivision {
@@ -55,10 +59,10 @@ inline double butterfly_weight(std::uint32_t k, std::uint32_t j) {
 }
 
 /// One butterfly level in place on the dense triangle mesh g of counts n.
-template <class G>
-void butterfly_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, const Subdivision_visitor& vis) {
+template <class G, class V, class Refiner>
+void butterfly_level_in_place(G& g, const std::array<std::size_t, 4>& n, V& vis, const Refiner& refiner) {
   using H = halfedge_descriptor_t<G>;
-  const Stars st = stars(g, n[0], {}, {});
+  const Stars st = stars(g, {}, {});
   auto vi = get(vertex_index, g);
   auto num = [&](auto v) { return static_cast<std::uint32_t>(get(vi, v)); };
   const auto null_face = boost::graph_traits<G>::null_face();
@@ -83,7 +87,7 @@ void butterfly_level_in_place(G& g, int level, const std::array<std::size_t, 4>&
     H y = x;
     for (std::uint32_t j = 0; j < k; ++j, y = opposite(prev(y, g), g)) m.add(target(y, g), scale * s[j]);
   };
-  interpolating_one_to_four_level(g, level, n, vis, [&](H x, Mask<G>& m) {
+  interpolating_one_to_four_level(g, n, vis, refiner, [&](H x, Mask<G>& m) {
     const H o = opposite(x, g);
     const auto va = source(x, g), vb = target(x, g);
     const std::uint32_t a = num(va), b = num(vb);
@@ -110,17 +114,19 @@ void butterfly_level_in_place(G& g, int level, const std::array<std::size_t, 4>&
 /// triangle mesh g. Throws genmesh::invalid_input naming the first
 /// non-triangle face, g unchanged, when g is not a triangle mesh,
 /// options.iterations < 0, or an edge has no face on either side.
-template <class G>
+template <class G, class VertexPointMap = Default_map, class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result butterfly_subdivision(G& g, const Butterfly_options& options = {}) {
+Subdivision_result butterfly_subdivision(G& g, const Butterfly_options<VertexPointMap>& options = {}, Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
-  return ds::run_in_place(
-      g, options.iterations, "butterfly_subdivision", {}, {},
+  visitor.on_started(std::as_const(g));
+  Subdivision_result r = ds::run_in_place(
+      g, options.iterations, "butterfly_subdivision", Default_map{}, Default_map{}, options.vertex_point_map,
       [](const auto& m) { return ds::face_counts(m, "butterfly_subdivision", 3); },
-      [&](auto& m, int level, const std::array<std::size_t, 4>& n, std::vector<double>&) {
-        ds::butterfly_level_in_place(m, level, n, options.visitor);
-      },
-      ds::one_to_four_counts);
+      [&](auto& m, const std::array<std::size_t, 4>& n, std::vector<double>&, const std::vector<std::uint32_t>&,
+          const auto& refiner) { ds::butterfly_level_in_place(m, n, visitor, refiner); },
+      ds::one_to_four_counts, visitor);
+  visitor.on_finished(std::as_const(g));
+  return r;
 }
 
 } // namespace genmesh

@@ -22,33 +22,41 @@
 // Same masks as CGAL's CatmullClark_mask_3 on closed meshes.
 // Creases (.crease_sharpness): the rules of <genmesh/subdivision/loop.h>
 // (DeRose, Kass, Truong 1998) with Catmull-Clark's smooth masks; tagged
-// corners (.corners) stay; .visitor.on_vertex receives every new vertex's mask.
+// corners (.corners) stay; the visitor's on_vertex_mask receives every new
+// vertex's mask.
 // Limits: g's other properties are not refined (new elements get their
 // defaults); a backend without set_next, or a mesh with removed elements, is
-// refined on a Halfedge_mesh copy and rebuilt.
+// refined through the local operations (split_edge, split_face: the
+// backend's own), never on a copy.
 #pragma once
 
 #include <genmesh/subdivision/detail/in_place.h>
 
+#include <utility>
+
 namespace genmesh {
 
-/// Options of catmull_clark_subdivision().
+/// Options of catmull_clark_subdivision(). With maps, name the type by its
+/// arguments' deduction: genmesh::Catmull_clark_options{.crease_map = m}.
+template <class CreaseMap = Default_map, class CornerMap = Default_map, class VertexPointMap = Default_map>
 struct Catmull_clark_options {
   int iterations = 1;                             ///< levels to apply (≥ 0)
   Boundary_rule boundary = Boundary_rule::smooth; ///< border rule
-  /// Crease sharpness per edge, in edge iteration order (empty: no creases):
-  /// 0 smooth, ∞ sharp, fractional semi-sharp (DeRose, Kass, Truong 1998).
-  std::vector<double> crease_sharpness = {};
+  /// Edge → crease sharpness, as Loop_options::crease_map: read before the
+  /// first level, holding every edge's sharpness of the result after the
+  /// last (the map must accept the edges the call adds).
+  CreaseMap crease_map = {};
   /// After the last level (iterations ≥ 1: all faces are quads), move every
   /// vertex to its limit position (n² v + 4 Σ edge neighbours + Σ diagonal
   /// neighbours) / (n (n + 5)); border and crease vertices (p + 4v + q)/6,
   /// corners stay.
   bool limit = false;
-  /// Vertices (numbered in vertex iteration order) that are corners: they
-  /// keep their position at every level. Their numbers stay valid across levels.
-  std::vector<std::uint32_t> corners = {};
-  /// Attribute transport (masks of every new vertex) and level hooks.
-  Subdivision_visitor visitor = {};
+  /// Vertex → bool (read once; default: none): tagged vertices are corners,
+  /// they keep their position at every level.
+  CornerMap corner_map = {};
+  /// Vertex → point (read-write; default get(genmesh::vertex_point, g)): the
+  /// positions read and written; it must accept the vertices the call adds.
+  VertexPointMap vertex_point_map = {};
 };
 
 namespace detail::subdivision {
@@ -58,36 +66,43 @@ inline std::array<std::size_t, 4> quad_split_counts(std::array<std::size_t, 4> n
 }
 
 /// One Catmull-Clark level in place on the dense mesh g of counts n.
-template <class G>
-void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
-                                  const Catmull_clark_options& o) {
+template <class G, class O, class V, class Refiner>
+void catmull_clark_level_in_place(G& g, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
+                                  const std::vector<std::uint32_t>& corners, const O& o, V& vis,
+                                  const Refiner& refiner) {
   using Vec = Eigen::Vector3d;
+  constexpr bool masks = visits_vertex_masks<V>;
   const std::size_t nv = n[0], ne = n[1], nf = n[2], nc = n[3];
-  const Subdivision_visitor& vis = o.visitor;
-  if (vis.on_level_begin) vis.on_level_begin(level, nv, nv + ne + nf);
-  auto pts = get(vertex_point, g);
+  auto pts = refiner.pts;
   auto vi = get(vertex_index, g);
   auto fi = get(face_index, g);
   auto num = [&](auto v) { return static_cast<std::uint32_t>(get(vi, v)); };
-  const Stars st = stars(g, nv, sharp, o.corners);
+  const Stars st = stars(g, sharp, corners);
   const bool creases = !sharp.empty();
-  auto av = append_elements(g, ne + nf, 0, 0);
+  const std::size_t nvb = index_bound(vertex_index, g);
+  std::vector<std::uint32_t> number(index_bound(edge_index, g), k_none);
+  std::vector<std::uint32_t> face_number; // by face index (masks)
+  if constexpr (masks) {
+    face_number.assign(index_bound(face_index, g), k_none);
+    std::uint32_t j = 0;
+    for (auto f : faces(g)) face_number[static_cast<std::size_t>(get(fi, f))] = j++;
+  }
+  auto points = refiner.new_points(g, ne + nf);
   // Σ face points per vertex (q), Σ ring neighbours (acc), Σ crease neighbours (ends)
-  std::vector<Vec> q(nv, Vec::Zero());
-  Vertex_sums sums{std::vector<Vec>(nv, Vec::Zero()), std::vector<Vec>(creases ? nv : 0, Vec::Zero())};
+  std::vector<Vec> q(nvb, Vec::Zero());
+  Vertex_sums sums{std::vector<Vec>(nvb, Vec::Zero()), std::vector<Vec>(creases ? nvb : 0, Vec::Zero())};
   std::vector<std::uint32_t> face_begin, face_corner; // for the visitor's masks
-  if (vis.on_vertex) face_begin.assign(1, 0), face_corner.reserve(nc);
+  if constexpr (masks) face_begin.assign(1, 0), face_corner.reserve(nc);
   std::vector<std::uint32_t> src;
   std::vector<double> w;
   std::vector<halfedge_descriptor_t<G>> xs;
   auto old_target = [&](auto x) { return num(target(x, g)); };
-  std::vector<char> border_edge(vis.on_vertex ? ne : 0, 0);
-  std::vector<std::uint32_t> edge_faces(vis.on_vertex ? 4 * ne : 0); // a, b, f1, f2 per edge point (masks)
+  std::vector<char> border_edge(masks ? ne : 0, 0);
+  std::vector<std::uint32_t> edge_faces(masks ? 4 * ne : 0); // a, b, f1, f2 per edge point (masks)
   auto ei = get(edge_index, g);
   // One pass over the faces (face order, each from its lowest vertex): face
   // points, and the edge points numbered by first use (the face of the first
   // use contributes first), so that the numbering and every sum are canonical.
-  std::vector<std::uint32_t> number(ne, k_none);
   std::uint32_t used = 0;
   std::size_t j = 0;
   for (auto f : faces(g)) {
@@ -97,42 +112,44 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
     for (const auto x : xs) sum += to_eigen(get(pts, source(x, g)));
     const Vec c = sum / double(xs.size());
     for (const auto x : xs) q[num(source(x, g))] += c;
-    put(pts, av.vertex(ne + j), from_eigen<point_t<G>>(c));
-    if (vis.on_vertex) {
+    points.set(ne + j, c);
+    if constexpr (masks) {
       src.clear();
       for (const auto x : xs) face_corner.push_back(num(source(x, g))), src.push_back(face_corner.back());
       face_begin.push_back(static_cast<std::uint32_t>(face_corner.size()));
       w.assign(xs.size(), 1.0 / double(xs.size()));
-      vis.on_vertex(static_cast<std::uint32_t>(nv + ne + j), src, w);
+      vis.on_vertex_mask(static_cast<std::uint32_t>(nv + ne + j), src, w);
     }
     for (const auto x : xs) {
       const std::size_t k = static_cast<std::size_t>(get(ei, edge(x, g)));
-      const Edge_use use = edge_use(g, x, k, number, sharp, static_cast<bool>(vis.on_vertex));
+      const Edge_use use = edge_use(g, x, k, number, sharp, masks);
       const double s = creases ? sharp[k] : 0.0;
       const auto [we, ww] = edge_weights(0.25, 0.25, use.border, s);
       if (use.seen) { // second use: the other face point
-        add_to_point<G>(pts, av.vertex(number[k]), ww, c);
+        points.add(number[k], ww, c);
         continue;
       }
       const std::uint32_t i = number[k] = used++;
-      first_edge_point(g, pts, x, av.vertex(i), we, ww, c, st, use.border, s, sums);
-      if (vis.on_vertex) {
+      first_edge_point(g, pts, x, points, i, we, ww, c, st, use.border, s, sums);
+      if constexpr (masks) {
         border_edge[i] = use.border;
         edge_faces[4 * i] = num(source(x, g)), edge_faces[4 * i + 1] = num(target(x, g));
         edge_faces[4 * i + 2] = static_cast<std::uint32_t>(j);
-        edge_faces[4 * i + 3] = use.border ? k_none : static_cast<std::uint32_t>(get(fi, face(opposite(x, g), g)));
+        edge_faces[4 * i + 3] =
+            use.border ? k_none : face_number[static_cast<std::size_t>(get(fi, face(opposite(x, g), g)))];
       }
     }
     ++j;
   }
-  border_edge_points(g, pts, av, number, sums.acc);
+  border_edge_points(g, pts, points, number, sums.acc);
   auto add_face_mask = [&](std::size_t jf, double weight, std::vector<std::uint32_t>& s, std::vector<double>& ws) {
     const std::uint32_t b = face_begin[jf], e = face_begin[jf + 1];
     for (std::uint32_t c = b; c < e; ++c) s.push_back(face_corner[c]), ws.push_back(weight / double(e - b));
   };
-  if (vis.on_vertex) {
+  if constexpr (masks) {
     std::vector<std::uint32_t> k_of(ne);
-    for (std::uint32_t k = 0; k < ne; ++k) k_of[number[k]] = k;
+    for (std::uint32_t k = 0; k < number.size(); ++k)
+      if (number[k] != k_none) k_of[number[k]] = k;
     for (std::uint32_t i = 0; i < ne; ++i) {
       const bool border = border_edge[i] != 0;
       const auto [we, ww] = edge_weights(0.25, 0.25, border, creases ? sharp[k_of[i]] : 0.0);
@@ -142,14 +159,14 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
         add_face_mask(edge_faces[4 * i + 2], ww, src, w);
         add_face_mask(edge_faces[4 * i + 3], ww, src, w);
       }
-      vis.on_vertex(static_cast<std::uint32_t>(nv + i), src, w);
+      vis.on_vertex_mask(static_cast<std::uint32_t>(nv + i), src, w);
     }
   }
-  std::vector<Vertex_rule> rules(vis.on_vertex ? nv : 0);
+  std::vector<Vertex_rule> rules(masks ? nvb : 0);
   {
-    std::uint32_t i = 0;
     for (auto v : vertices(g)) {
-      if (i == nv) break;
+      const auto i = static_cast<std::uint32_t>(get(vi, v));
+      if (i >= nvb) break; // appended (bulk path): iteration is by increasing index
       const double val = st.valence[i];
       const Vertex_rule smooth = val == 0 ? Vertex_rule{} : Vertex_rule{(val - 2.0) / val, 1.0 / (val * val), 0, 1.0 / (val * val)};
       const Vertex_rule r = vertex_rule(st, i, o.boundary, smooth);
@@ -157,19 +174,18 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
       if (r.faces != 0) p += r.faces * q[i];
       if (r.ends != 0) p += r.ends * sums.ends[i];
       sums.acc[i] = p;
-      if (vis.on_vertex) rules[i] = r;
-      ++i;
+      if constexpr (masks) rules[i] = r;
     }
   }
-  if (vis.on_vertex) {
+  if constexpr (masks) {
     // the faces around each old vertex, from the corner lists
-    std::vector<std::uint32_t> vf_begin(nv + 1, 0), vf(face_corner.size());
+    std::vector<std::uint32_t> vf_begin(nvb + 1, 0), vf(face_corner.size());
     for (std::uint32_t c : face_corner) ++vf_begin[c + 1];
-    for (std::size_t v = 0; v < nv; ++v) vf_begin[v + 1] += vf_begin[v];
+    for (std::size_t v = 0; v < nvb; ++v) vf_begin[v + 1] += vf_begin[v];
     std::vector<std::uint32_t> fill(vf_begin.begin(), vf_begin.end() - 1);
     for (std::uint32_t jf = 0; jf < nf; ++jf)
       for (std::uint32_t c = face_begin[jf]; c < face_begin[jf + 1]; ++c) vf[fill[face_corner[c]]++] = jf;
-    emit_vertex_masks(g, vis, st, number, sharp, border_edge, rules,
+    emit_vertex_masks(g, vis, st, number, used, sharp, border_edge, rules,
                       [&](std::uint32_t x, double weight, std::vector<std::uint32_t>& s, std::vector<double>& ws) {
                         for (std::uint32_t i = vf_begin[x]; i < vf_begin[x + 1]; ++i)
                           add_face_mask(vf[i], weight, s, ws);
@@ -178,31 +194,32 @@ void catmull_clark_level_in_place(G& g, int level, const std::array<std::size_t,
   write_old_positions(g, pts, sums.acc);
   sums = Vertex_sums{};
   std::vector<Vec>().swap(q);
-  decrement_creases(sharp, number, 2 * ne + nc);
-  auto ae = append_elements(g, 0, ne + nc, nc - nf);
-  split_edges(g, av, ae, nv, ne, number);
-  cut_polygons(g, av, ae, nv, ne, nf);
-  if (vis.on_level_end) vis.on_level_end(level);
+  const std::vector<std::uint32_t> other = refiner.quads(g, points, nv, ne, nf, nc, number);
+  decrement_creases(sharp, number, other, index_bound(edge_index, g));
 }
 
 } // namespace detail::subdivision
 
 /// Applies options.iterations levels of Catmull-Clark subdivision to g (any
 /// polygons). Throws genmesh::invalid_input, g unchanged, when
-/// options.iterations < 0, a face cycle is corrupt, crease_sharpness has
-/// another size than the edge count, a corner number is out of range, or an
-/// edge has no face on either side.
-template <class G>
+/// options.iterations < 0, a face cycle is corrupt, the crease map gives an
+/// edge a negative or NaN sharpness, or an edge has no face on either side.
+template <class G, class CreaseMap = Default_map, class CornerMap = Default_map, class VertexPointMap = Default_map,
+          class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options& options = {}) {
+Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options<CreaseMap, CornerMap, VertexPointMap>& options = {},
+                                             Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
+  visitor.on_started(std::as_const(g));
+  ds::Final_tags tags;
   Subdivision_result r = ds::run_in_place(
-      g, options.iterations, "catmull_clark_subdivision", options.crease_sharpness, options.corners,
+      g, options.iterations, "catmull_clark_subdivision", options.crease_map, options.corner_map, options.vertex_point_map,
       [](const auto& m) { return ds::face_counts(m, "catmull_clark_subdivision", 0); },
-      [&](auto& m, int level, const std::array<std::size_t, 4>& n, std::vector<double>& sharp) {
-        ds::catmull_clark_level_in_place(m, level, n, sharp, options);
+      [&](auto& m, const std::array<std::size_t, 4>& n, std::vector<double>& sharp,
+          const std::vector<std::uint32_t>& corners, const auto& refiner) {
+        ds::catmull_clark_level_in_place(m, n, sharp, corners, options, visitor, refiner);
       },
-      ds::quad_split_counts);
+      ds::quad_split_counts, visitor, &tags);
   if (options.limit && options.iterations > 0) {
     auto interior = [&](const ds::Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
       const double n = s.valence[v];
@@ -214,8 +231,9 @@ Subdivision_result catmull_clark_subdivision(G& g, const Catmull_clark_options& 
       }
       return (n * n * s.points[v] + 4.0 * edges + diagonals) / (n * (n + 5.0));
     };
-    ds::move_to_limit(g, r, options.corners, options.boundary, interior);
+    ds::move_to_limit(g, tags, options.boundary, interior, options.vertex_point_map);
   }
+  visitor.on_finished(std::as_const(g));
   return r;
 }
 

@@ -1,13 +1,18 @@
-// genmesh/subdivision/creases.h — crease sharpness vectors for Loop and
-// Catmull-Clark subdivision from vertex pairs.
+// genmesh/subdivision/creases.h — crease and corner maps for Loop and
+// Catmull-Clark subdivision (.crease_map, .corner_map), from vertex pairs.
 //
-// The schemes take sharpness per edge in edge iteration order; files and
-// users name creases by their end vertices. crease_sharpness(g, creases)
-// translates, vertices numbered in vertex iteration order (the numbering of
-// to_soup() and of the file the mesh was read from).
+// The schemes read sharpness per edge through a property map and write the
+// refined mesh's back into it; files and users name creases by their end
+// vertices. make_crease_map(g) / make_corner_map(g) give maps of g that grow
+// with the elements a subdivision adds (boost::vector_property_map over g's
+// index maps, on every backend); crease_map(g, creases) fills one from
+// vertex pairs, vertices numbered in vertex iteration order (the numbering
+// of to_soup() and of the file the mesh was read from).
 #pragma once
 
 #include <genmesh/subdivision/detail/refinement.h>
+
+#include <boost/property_map/vector_property_map.hpp>
 
 #include <cstdint>
 #include <span>
@@ -23,7 +28,7 @@ struct Crease {
   double sharpness = 0; ///< 0 smooth, infinity sharp, fractional semi-sharp
 };
 
-/// The sharpness vector (edge iteration order) for .crease_sharpness. Throws
+/// The sharpness of every edge in edge iteration order. Throws
 /// genmesh::invalid_input naming the crease when its vertices are out of
 /// range or not joined by an edge, or its sharpness is negative or NaN.
 template <class G>
@@ -59,6 +64,37 @@ std::vector<double> crease_sharpness(const G& g, std::span<const Crease> creases
     out[e] = c.sharpness;
   }
   return out;
+}
+
+/// An edge → sharpness map of g for .crease_map, every edge 0 (smooth). It
+/// is indexed by g's edge index and grows with the edges added later.
+template <class G>
+  requires detail::subdivision::Subdividable<G>
+auto make_crease_map(const G& g) {
+  auto index = get(edge_index, g);
+  return boost::vector_property_map<double, decltype(index)>(static_cast<unsigned>(index_bound(edge_index, g)), index);
+}
+
+/// A vertex → bool map of g for .corner_map, no vertex tagged (a byte per
+/// vertex index, converted to bool); grows with the vertices added later.
+template <class G>
+  requires detail::subdivision::Subdividable<G>
+auto make_corner_map(const G& g) {
+  auto index = get(vertex_index, g);
+  return boost::vector_property_map<unsigned char, decltype(index)>(
+      static_cast<unsigned>(index_bound(vertex_index, g)), index);
+}
+
+/// make_crease_map(g) holding the creases named by their end vertices.
+/// Throws as crease_sharpness().
+template <class G>
+  requires detail::subdivision::Subdividable<G>
+auto crease_map(const G& g, std::span<const Crease> creases) {
+  const std::vector<double> sharp = crease_sharpness(g, creases);
+  auto m = make_crease_map(g);
+  std::size_t k = 0;
+  for (auto e : edges(g)) put(m, e, sharp[k++]);
+  return m;
 }
 
 } // namespace genmesh

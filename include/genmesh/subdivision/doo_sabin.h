@@ -13,7 +13,7 @@
 // Numbering: the corner points in face order, corner by corner from each
 // face's lowest vertex; faces: F-faces (face order), E-faces (edge order),
 // V-faces (vertex order).
-// Attributes: .visitor.on_vertex receives every new vertex's mask (the
+// Attributes: the visitor's on_vertex_mask receives every new vertex's mask (the
 // corner point's α_k over its face's corners).
 // Guarantees: identical on every backend; on closed meshes V' = Σ deg f,
 // F' = F + E + V, the Euler characteristic is kept and every new vertex has
@@ -33,19 +33,22 @@
 namespace genmesh {
 
 /// Options of doo_sabin_subdivision().
+template <class VertexPointMap = Default_map>
 struct Doo_sabin_options {
   int iterations = 1; ///< levels to apply (≥ 0)
-  /// Attribute transport (masks of every new vertex) and level hooks.
-  Subdivision_visitor visitor = {};
+  /// Vertex → point (read-write; default get(genmesh::vertex_point, g)); it
+  /// must accept the vertices the call adds.
+  VertexPointMap vertex_point_map = {};
 };
 
 namespace detail::subdivision {
 
-/// One level; the visitor gets on_level_begin(level, ...) and every new
-/// vertex's mask in the soup's point order (the rebuilt mesh's vertex order).
-inline Polygon_soup doo_sabin_level(const Snapshot& s, const Subdivision_visitor& vis = {}, int level = 0) {
+/// One level; the visitor gets every new vertex's mask in the soup's point
+/// order (the rebuilt mesh's vertex order).
+template <class V = Mutation_visitor>
+Polygon_soup doo_sabin_level(const Snapshot& s, V&& vis = {}) {
+  constexpr bool masks = visits_vertex_masks<V>;
   const std::size_t nc = s.corner_vertex.size();
-  if (vis.on_level_begin) vis.on_level_begin(level, s.num_vertices(), nc);
   Polygon_soup out;
   out.points.resize(nc);
   std::vector<double> w;
@@ -59,10 +62,10 @@ inline Polygon_soup doo_sabin_level(const Snapshot& s, const Subdivision_visitor
       Eigen::Vector3d p = Eigen::Vector3d::Zero();
       for (std::uint32_t k = 0; k < n; ++k) p += w[k] * s.points[s.corner_vertex[b + (i + k) % n]];
       out.points[b + i] = p;
-      if (vis.on_vertex) {
+      if constexpr (masks) {
         src.resize(n);
         for (std::uint32_t k = 0; k < n; ++k) src[k] = s.corner_vertex[b + (i + k) % n];
-        vis.on_vertex(b + i, src, w);
+        vis.on_vertex_mask(b + i, src, w);
       }
     }
   }
@@ -95,21 +98,17 @@ inline Polygon_soup doo_sabin_level(const Snapshot& s, const Subdivision_visitor
 /// Applies options.iterations levels of Doo-Sabin subdivision to g (any
 /// polygons). Throws genmesh::invalid_input, g unchanged, when
 /// options.iterations < 0.
-template <class G>
+template <class G, class VertexPointMap = Default_map, class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result doo_sabin_subdivision(G& g, const Doo_sabin_options& options = {}) {
+Subdivision_result doo_sabin_subdivision(G& g, const Doo_sabin_options<VertexPointMap>& options = {}, Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
-  const Subdivision_visitor& vis = options.visitor;
+  visitor.on_started(std::as_const(g));
   std::vector<double> none;
   Subdivision_result r = ds::run_levels(
       g, options.iterations, "doo_sabin_subdivision", 0, none,
-      [&](const ds::Snapshot& s, int i) {
-        // the hooks of a level chained without a rebuild (see run_levels) run on its soup
-        if (i > 0 && vis.on_level_end) vis.on_level_end(i - 1);
-        return ds::Refined{ds::doo_sabin_level(s, vis, i), {}};
-      },
-      ds::no_half);
-  if (options.iterations > 0 && vis.on_level_end) vis.on_level_end(options.iterations - 1);
+      [&](const ds::Snapshot& s, int) { return ds::Refined{ds::doo_sabin_level(s, visitor), {}}; }, ds::no_half,
+      visitor, options.vertex_point_map);
+  visitor.on_finished(std::as_const(g));
   return r;
 }
 

@@ -15,11 +15,11 @@
 // Guarantees: identical on every backend; V' = V + E + (faces with > 3
 // sides), F' = 4 (triangles) + Σ deg (others); Euler characteristic and
 // border loops kept.
-// Attributes: .visitor.on_vertex receives every new vertex's mask (an old
+// Attributes: the visitor's on_vertex_mask receives every new vertex's mask (an old
 // vertex itself, a midpoint its two ends, a centroid its corners).
 // Limits: g's other properties are not refined in place (new elements get
-// their defaults) and do not survive a rebuild (mesh with non-triangles, a
-// backend without set_next, a mesh with removed elements).
+// their defaults) and do not survive a rebuild (a mesh with non-triangles:
+// the rebuild links a fresh mesh through the backend's own link_soup).
 #pragma once
 
 #include <genmesh/subdivision/detail/in_place.h>
@@ -27,17 +27,21 @@
 namespace genmesh {
 
 /// Options of midpoint_subdivision().
+template <class VertexPointMap = Default_map>
 struct Midpoint_options {
   int iterations = 1; ///< levels to apply (≥ 0)
-  /// Attribute transport (masks of every new vertex) and level hooks.
-  Subdivision_visitor visitor = {};
+  /// Vertex → point (read-write; default get(genmesh::vertex_point, g)); it
+  /// must accept the vertices the call adds.
+  VertexPointMap vertex_point_map = {};
 };
 
 namespace detail::subdivision {
 
 /// One level through a refined soup (any polygons); the visitor gets the
 /// masks in the soup's point order (the rebuilt mesh's vertex order).
-inline Polygon_soup midpoint_level(const Snapshot& s, const Subdivision_visitor& vis) {
+template <class V>
+Polygon_soup midpoint_level(const Snapshot& s, V& vis) {
+  constexpr bool masks = visits_vertex_masks<V>;
   const std::uint32_t nv = static_cast<std::uint32_t>(s.num_vertices());
   const std::uint32_t ne = static_cast<std::uint32_t>(s.num_edges());
   Polygon_soup out;
@@ -45,14 +49,14 @@ inline Polygon_soup midpoint_level(const Snapshot& s, const Subdivision_visitor&
   out.points = s.points;
   std::vector<std::uint32_t> src;
   std::vector<double> w;
-  if (vis.on_vertex) {
+  if constexpr (masks) {
     const double one = 1.0;
-    for (std::uint32_t v = 0; v < nv; ++v) vis.on_vertex(v, {&v, 1}, {&one, 1});
+    for (std::uint32_t v = 0; v < nv; ++v) vis.on_vertex_mask(v, {&v, 1}, {&one, 1});
   }
   for (std::uint32_t e = 0; e < ne; ++e) {
     const std::uint32_t c = s.edge_corner[e], a = s.corner_vertex[c], b = s.head(c);
     out.points.push_back(0.5 * (s.points[a] + s.points[b]));
-    if (vis.on_vertex) src.assign({a, b}), w.assign({0.5, 0.5}), vis.on_vertex(nv + e, src, w);
+    if constexpr (masks) src.assign({a, b}), w.assign({0.5, 0.5}), vis.on_vertex_mask(nv + e, src, w);
   }
   for (std::uint32_t f = 0; f < s.num_faces(); ++f) {
     const std::uint32_t c0 = s.face_begin[f];
@@ -67,10 +71,10 @@ inline Polygon_soup midpoint_level(const Snapshot& s, const Subdivision_visitor&
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
       for (std::uint32_t c = c0; c < s.face_begin[f + 1]; ++c) sum += s.points[s.corner_vertex[c]];
       const Polygon_soup::Index center = out.add_point(sum / double(s.face_size(f)));
-      if (vis.on_vertex) {
+      if constexpr (masks) {
         src.assign(s.corner_vertex.begin() + c0, s.corner_vertex.begin() + s.face_begin[f + 1]);
         w.assign(src.size(), 1.0 / double(src.size()));
-        vis.on_vertex(static_cast<std::uint32_t>(center), src, w);
+        vis.on_vertex_mask(static_cast<std::uint32_t>(center), src, w);
       }
       for (std::uint32_t c = c0; c < s.face_begin[f + 1]; ++c)
         out.add_face({s.corner_vertex[c], nv + s.corner_edge[c], center, nv + s.corner_edge[s.prev(c)]});
@@ -94,35 +98,31 @@ bool all_triangles(const G& g) {
 /// Applies options.iterations levels of midpoint subdivision to g (any
 /// polygons). Throws genmesh::invalid_input, g unchanged, when
 /// options.iterations < 0.
-template <class G>
+template <class G, class VertexPointMap = Default_map, class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result midpoint_subdivision(G& g, const Midpoint_options& options = {}) {
+Subdivision_result midpoint_subdivision(G& g, const Midpoint_options<VertexPointMap>& options = {}, Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
-  const Subdivision_visitor& vis = options.visitor;
-  if (ds::all_triangles(g))
-    return ds::run_in_place(
-        g, options.iterations, "midpoint_subdivision", {}, {},
+  visitor.on_started(std::as_const(g));
+  Subdivision_result r;
+  if (ds::all_triangles(g)) {
+    r = ds::run_in_place(
+        g, options.iterations, "midpoint_subdivision", Default_map{}, Default_map{}, options.vertex_point_map,
         [](const auto& m) { return ds::face_counts(m, "midpoint_subdivision", 3); },
-        [&](auto& m, int level, const std::array<std::size_t, 4>& n, std::vector<double>&) {
-          ds::interpolating_one_to_four_level(m, level, n, vis, [&](auto x, auto& mask) {
+        [&](auto& m, const std::array<std::size_t, 4>& n, std::vector<double>&, const std::vector<std::uint32_t>&,
+            const auto& refiner) {
+          ds::interpolating_one_to_four_level(m, n, visitor, refiner, [&](auto x, auto& mask) {
             mask.add(source(x, m), 0.5), mask.add(target(x, m), 0.5);
           });
         },
-        ds::one_to_four_counts);
-  std::vector<double> none;
-  Subdivision_result r = ds::run_levels(
-      g, options.iterations, "midpoint_subdivision", 0, none, [&](const ds::Snapshot& s, int level) {
-        // the hooks of a level chained without a rebuild (see run_levels) run on its soup
-        if (level > 0 && vis.on_level_end) vis.on_level_end(level - 1);
-        if (vis.on_level_begin) {
-          std::size_t added = s.num_edges();
-          for (std::uint32_t f = 0; f < s.num_faces(); ++f) added += s.face_size(f) != 3;
-          vis.on_level_begin(level, s.num_vertices(), s.num_vertices() + added);
-        }
-        return ds::Refined{ds::midpoint_level(s, vis), {}};
-      },
-      ds::no_half);
-  if (options.iterations > 0 && vis.on_level_end) vis.on_level_end(options.iterations - 1);
+        ds::one_to_four_counts, visitor);
+  } else {
+    std::vector<double> none;
+    r = ds::run_levels(
+        g, options.iterations, "midpoint_subdivision", 0, none,
+        [&](const ds::Snapshot& s, int) { return ds::Refined{ds::midpoint_level(s, visitor), {}}; }, ds::no_half,
+        visitor, options.vertex_point_map);
+  }
+  visitor.on_finished(std::as_const(g));
   return r;
 }
 

@@ -14,7 +14,7 @@
 // Numbering: old vertices, then per face in face order its face point (or,
 // refined border faces, its two border points); faces: two per interior edge
 // (edge iteration order), one per border edge.
-// Attributes: .visitor.on_vertex receives every new vertex's mask in the
+// Attributes: the visitor's on_vertex_mask receives every new vertex's mask in the
 // numbering above (a face point its corners, 1/3 each; an interior old vertex
 // itself with 1 − α and its neighbours with α/n; a border vertex itself, or
 // (4, 19, 4)/27 when it moves; a border point its (16, 10, 1)/27 mask).
@@ -39,14 +39,16 @@
 namespace genmesh {
 
 /// Options of sqrt3_subdivision().
+template <class VertexPointMap = Default_map>
 struct Sqrt3_options {
   int iterations = 1; ///< levels to apply (≥ 0)
   /// smooth: Kobbelt's border rule at every second level of a call (levels
   /// 1, 3, ... counted from 0, as CGAL's Sqrt3_subdivision); fixed: the border
   /// polygon is never refined and border vertices never move.
   Boundary_rule boundary = Boundary_rule::smooth;
-  /// Attribute transport (masks of every new vertex) and level hooks.
-  Subdivision_visitor visitor = {};
+  /// Vertex → point (read-write; default get(genmesh::vertex_point, g)); it
+  /// must accept the vertices the call adds.
+  VertexPointMap vertex_point_map = {};
 };
 
 namespace detail::subdivision {
@@ -58,10 +60,10 @@ namespace detail::subdivision {
 // (p: the border vertex after src, q: the one before tgt along the border),
 // the middle triangle is (n1, n2, x), and n1 / n2 stand in for the face point
 // of the edges x → src / tgt → x; tgt moves to (4 (its border neighbours) + 19 tgt) / 27.
-// The visitor gets on_level_begin(level, ...) and every new vertex's mask in
-// the soup's point order (the rebuilt mesh's vertex order).
-inline Polygon_soup sqrt3_level(const Snapshot& s, bool refine_border, const Subdivision_visitor& vis = {},
-                                int level = 0) {
+// The visitor gets every new vertex's mask in the soup's point order (the
+// rebuilt mesh's vertex order).
+template <class V = Mutation_visitor>
+Polygon_soup sqrt3_level(const Snapshot& s, bool refine_border, V&& vis = {}) {
   const std::uint32_t nv = static_cast<std::uint32_t>(s.num_vertices());
   const std::uint32_t ne = static_cast<std::uint32_t>(s.num_edges());
   const std::uint32_t nf = static_cast<std::uint32_t>(s.num_faces());
@@ -86,7 +88,7 @@ inline Polygon_soup sqrt3_level(const Snapshot& s, bool refine_border, const Sub
   // per face: its new point (face point, or n1 with n2 = n1 + 1) and its border corner
   std::vector<std::uint32_t> first_point(nf), border_corner(nf, k_none);
   // for the visitor: per refined border face its p and q; per moved border vertex tgt its (src, q)
-  const bool masks = bool(vis.on_vertex);
+  constexpr bool masks = visits_vertex_masks<V>;
   std::vector<std::array<std::uint32_t, 2>> face_pq(masks ? nf : 0), moved(masks ? nv : 0, {k_none, k_none});
   for (std::uint32_t f = 0; f < nf; ++f) {
     std::uint32_t borders = 0, bc = k_none;
@@ -113,8 +115,7 @@ inline Polygon_soup sqrt3_level(const Snapshot& s, bool refine_border, const Sub
       out.points.push_back(sum / double(s.face_size(f)));
     }
   }
-  if (vis.on_level_begin) vis.on_level_begin(level, nv, out.points.size());
-  if (masks) {
+  if constexpr (masks) {
     std::vector<std::uint32_t> src;
     std::vector<double> w;
     std::vector<std::vector<std::uint32_t>> neighbours(nv);
@@ -134,19 +135,19 @@ inline Polygon_soup sqrt3_level(const Snapshot& s, bool refine_border, const Sub
         src.assign({v}), w.assign({1.0 - alpha});
         for (std::uint32_t u : neighbours[v]) src.push_back(u), w.push_back(alpha / n);
       }
-      vis.on_vertex(v, src, w);
+      vis.on_vertex_mask(v, src, w);
     }
     for (std::uint32_t f = 0; f < nf; ++f) {
       const std::uint32_t bc = border_corner[f];
       if (bc == k_none) {
         src.assign(s.corner_vertex.begin() + s.face_begin[f], s.corner_vertex.begin() + s.face_begin[f + 1]);
         w.assign(src.size(), 1.0 / double(src.size()));
-        vis.on_vertex(first_point[f], src, w);
+        vis.on_vertex_mask(first_point[f], src, w);
       } else {
         const std::uint32_t a = s.corner_vertex[bc], b = s.head(bc);
         w.assign({16.0 / 27.0, 10.0 / 27.0, 1.0 / 27.0});
-        src.assign({a, b, face_pq[f][0]}), vis.on_vertex(first_point[f], src, w);
-        src.assign({b, a, face_pq[f][1]}), vis.on_vertex(first_point[f] + 1, src, w);
+        src.assign({a, b, face_pq[f][0]}), vis.on_vertex_mask(first_point[f], src, w);
+        src.assign({b, a, face_pq[f][1]}), vis.on_vertex_mask(first_point[f] + 1, src, w);
       }
     }
   }
@@ -179,21 +180,19 @@ inline Polygon_soup sqrt3_level(const Snapshot& s, bool refine_border, const Sub
 /// Applies options.iterations levels of √3 subdivision to the triangle mesh
 /// g. Throws genmesh::invalid_input naming the first non-triangle face, g
 /// unchanged, when g is not a triangle mesh or options.iterations < 0.
-template <class G>
+template <class G, class VertexPointMap = Default_map, class Visitor = Mutation_visitor>
   requires detail::subdivision::Subdividable<G>
-Subdivision_result sqrt3_subdivision(G& g, const Sqrt3_options& options = {}) {
+Subdivision_result sqrt3_subdivision(G& g, const Sqrt3_options<VertexPointMap>& options = {}, Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
-  const Subdivision_visitor& vis = options.visitor;
+  visitor.on_started(std::as_const(g));
   std::vector<double> none;
   Subdivision_result r = ds::run_levels(
       g, options.iterations, "sqrt3_subdivision", 3, none,
       [&](const ds::Snapshot& s, int i) {
-        // the hooks of a level chained without a rebuild (see run_levels) run on its soup
-        if (i > 0 && vis.on_level_end) vis.on_level_end(i - 1);
-        return ds::Refined{ds::sqrt3_level(s, options.boundary == Boundary_rule::smooth && i % 2 == 1, vis, i), {}};
+        return ds::Refined{ds::sqrt3_level(s, options.boundary == Boundary_rule::smooth && i % 2 == 1, visitor), {}};
       },
-      ds::no_half);
-  if (options.iterations > 0 && vis.on_level_end) vis.on_level_end(options.iterations - 1);
+      ds::no_half, visitor, options.vertex_point_map);
+  visitor.on_finished(std::as_const(g));
   return r;
 }
 

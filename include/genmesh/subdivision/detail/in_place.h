@@ -18,7 +18,7 @@
 //      into n quads around its face point (Catmull-Clark); the old face keeps
 //      one of its children.
 // The pieces shared by the schemes live here: the canonical face pass
-// (for_each_canonical_triangle, edge_use, first_edge_point, add_to_point),
+// (for_each_canonical_triangle, edge_use, first_edge_point),
 // the border edge points, the vertex masks for the visitor, the crease
 // decrement, the counts, and run_in_place. Loop and Catmull-Clark move the
 // old vertices (Vertex_sums, write_old_positions); butterfly and midpoint
@@ -39,41 +39,28 @@
 // <genmesh/detail/halfedge_mesh_bulk.h>); otherwise add_vertex/add_edge/
 // add_face are called one by one.
 // Other backends (no set_next, as the incidence mesh) and meshes with removed
-// elements are refined on a Halfedge_mesh copy with the same vertex and face
-// numbering, and the result (faces from their lowest vertex) is linked into a
-// fresh G through link_soup (the backend's genmesh_native_link_soup when it
-// has one).
+// elements refine the same way through the local operations instead
+// (Local_refiner): every old edge k is split by genmesh::split_edge in
+// first-use order, every old face is cut by genmesh::split_face (and, for
+// Catmull-Clark, its face point made by splitting its first inner edge) in
+// the order above, so a dense mesh gets the same elements in the same order
+// as with the bulk path; each call reaches the backend's native operation
+// (genmesh_native_split_edge, ...) when it has one. No copy is made.
+// The old elements are read through their indices (arrays sized by the index
+// bounds), so removed elements are skipped; on a mesh with removed elements
+// new elements may reuse free slots, and the visitor's mask numbers are then
+// vertex indices rather than iteration numbers.
 #pragma once
 
-#include <genmesh/halfedge_mesh.h>
+#include <genmesh/local_operations.h>
 #include <genmesh/subdivision/detail/refinement.h>
 
 #include <algorithm>
 #include <array>
-#include <functional>
 #include <span>
+#include <type_traits>
 
 namespace genmesh {
-
-/// Attribute transport and observation for every scheme:
-/// loop_subdivision(), catmull_clark_subdivision(), butterfly_subdivision(),
-/// midpoint_subdivision(), sqrt3_subdivision() and doo_sabin_subdivision().
-/// Every member may be left empty.
-struct Subdivision_visitor {
-  /// Before level `level` (0-based within the call) with the vertex counts
-  /// before and after it.
-  std::function<void(int level, std::size_t old_vertices, std::size_t new_vertices)> on_level_begin;
-  /// Once per vertex of the refined level, numbered in the refined mesh's
-  /// vertex iteration order: the vertices of the level before (numbered in
-  /// its vertex iteration order) and the weights, summing to 1, whose
-  /// combination of their old positions is its new position (a source may
-  /// appear more than once; add its weights). Blend user attributes with
-  /// them. Called before the topology changes, in no promised order.
-  std::function<void(std::uint32_t vertex, std::span<const std::uint32_t> sources,
-                     std::span<const double> weights)> on_vertex;
-  /// After level `level`, once the mesh is refined.
-  std::function<void(int level)> on_level_end;
-};
 
 namespace detail::subdivision {
 
@@ -187,22 +174,26 @@ inline Vertex_rule vertex_rule(const Stars& st, std::uint32_t v, Boundary_rule b
   return {(1 - m) * smooth.self + m * sharp.self, (1 - m) * smooth.ring, m * sharp.ends, (1 - m) * smooth.faces};
 }
 
-/// The old edges in edge iteration order with their halfedge, ends and border flag.
+/// The old edges in edge iteration order with their index, halfedge, ends
+/// (vertex indices) and border flag.
 template <class G, class Fn>
 void for_each_old_edge(G& g, Fn fn) {
   auto vi = get(vertex_index, g);
-  std::uint32_t k = 0;
+  auto ei = get(edge_index, g);
   for (auto e : edges(g)) {
+    const auto k = static_cast<std::uint32_t>(get(ei, e));
     const auto h = halfedge(e, g), o = opposite(h, g);
     const bool border = face(h, g) == boost::graph_traits<G>::null_face() ||
                         face(o, g) == boost::graph_traits<G>::null_face();
-    fn(k++, h, static_cast<std::uint32_t>(get(vi, source(h, g))), static_cast<std::uint32_t>(get(vi, target(h, g))),
+    fn(k, h, static_cast<std::uint32_t>(get(vi, source(h, g))), static_cast<std::uint32_t>(get(vi, target(h, g))),
        border);
   }
 }
 
+/// sharp by edge index, corners as vertex indices; arrays by vertex index.
 template <class G>
-Stars stars(G& g, std::size_t nv, const std::vector<double>& sharp, const std::vector<std::uint32_t>& corners) {
+Stars stars(G& g, const std::vector<double>& sharp, const std::vector<std::uint32_t>& corners) {
+  const std::size_t nv = index_bound(vertex_index, g);
   Stars st;
   st.valence.assign(nv, 0);
   st.border.assign(nv, 0);
@@ -244,19 +235,19 @@ struct Neighbours {
   std::vector<std::uint32_t> begin, vertex, edge;
 };
 template <class G>
-Neighbours neighbours(G& g, const Stars& st, const std::vector<std::uint32_t>& number) {
+Neighbours neighbours(G& g, const Stars& st, const std::vector<std::uint32_t>& number, std::size_t used) {
   Neighbours n;
   const std::size_t nv = st.valence.size();
   n.begin.assign(nv + 1, 0);
   for (std::size_t v = 0; v < nv; ++v) n.begin[v + 1] = n.begin[v] + st.valence[v];
   n.vertex.resize(n.begin[nv]);
   n.edge.resize(n.begin[nv]);
-  std::vector<std::uint32_t> ends(2 * number.size());
+  std::vector<std::uint32_t> ends(2 * used);
   for_each_old_edge(g, [&](std::uint32_t k, auto, std::uint32_t a, std::uint32_t b, bool) {
     ends[2 * number[k]] = a, ends[2 * number[k] + 1] = b;
   });
   std::vector<std::uint32_t> fill(n.begin.begin(), n.begin.end() - 1);
-  for (std::uint32_t k = 0; k < number.size(); ++k) { // in first-use order, as the sums
+  for (std::uint32_t k = 0; k < used; ++k) { // in first-use order, as the sums
     const std::uint32_t a = ends[2 * k], b = ends[2 * k + 1];
     n.vertex[fill[a]] = b, n.edge[fill[a]++] = k;
     n.vertex[fill[b]] = a, n.edge[fill[b]++] = k;
@@ -266,8 +257,8 @@ Neighbours neighbours(G& g, const Stars& st, const std::vector<std::uint32_t>& n
 
 /// Emits the mask of old vertex v's rule (face points given by face_mask,
 /// which appends the corners of the faces around v with their weights).
-template <class G, class Border_edge, class Face_mask>
-void emit_vertex_mask(const Subdivision_visitor& vis, const Stars& st, const Neighbours& nb, const Vertex_rule& r,
+template <class G, class V, class Border_edge, class Face_mask>
+void emit_vertex_mask(V& vis, const Stars& st, const Neighbours& nb, const Vertex_rule& r,
                       std::uint32_t v, const std::vector<double>& sharp, Border_edge is_border_edge,
                       Face_mask face_mask, std::vector<std::uint32_t>& src, std::vector<double>& w) {
   src.assign(1, v);
@@ -280,7 +271,7 @@ void emit_vertex_mask(const Subdivision_visitor& vis, const Stars& st, const Nei
       src.push_back(nb.vertex[i]), w.push_back(r.ends);
   }
   if (r.faces != 0) face_mask(v, r.faces, src, w);
-  vis.on_vertex(v, src, w);
+  vis.on_vertex_mask(v, src, w);
 }
 
 /// Rotates the three halfedges x of a triangle so that x[0] leaves its
@@ -333,78 +324,85 @@ struct Vertex_sums {
 /// m = we·(a + b) + ww·wing; a and b enter each other's sums.
 // Once per old edge in the hottest loop: out of line (GCC's choice) Loop
 // runs 5% more instructions (callgrind, armadillo), hence always_inline.
-template <class G, class Pts>
-[[gnu::always_inline]] inline void first_edge_point(const G& g, Pts& pts, halfedge_descriptor_t<G> x, vertex_descriptor_t<G> m, double we,
-                      double ww, const Eigen::Vector3d& wing, const Stars& st, bool border, double s,
-                      Vertex_sums& sums) {
+template <class G, class Pts, class Points>
+[[gnu::always_inline]] inline void first_edge_point(const G& g, Pts& pts, halfedge_descriptor_t<G> x, Points& points,
+                                                    std::size_t m, double we, double ww, const Eigen::Vector3d& wing,
+                                                    const Stars& st, bool border, double s, Vertex_sums& sums) {
   auto vi = get(vertex_index, g);
   const auto va = source(x, g), vb = target(x, g);
   const auto a = static_cast<std::uint32_t>(get(vi, va)), b = static_cast<std::uint32_t>(get(vi, vb));
   const Eigen::Vector3d pa = to_eigen(get(pts, va)), pb = to_eigen(get(pts, vb));
   Eigen::Vector3d p = we * (pa + pb);
   if (ww != 0) p += ww * wing;
-  put(pts, m, from_eigen<point_t<G>>(p));
+  points.set(m, p);
   if (!st.is_border(a)) sums.acc[a] += pb;
   if (!st.is_border(b)) sums.acc[b] += pa;
   if (!border && s > 0) sums.ends[a] += pb, sums.ends[b] += pa;
 }
 
-/// Second use of an edge: its other wing.
-template <class G, class Pts>
-[[gnu::always_inline]] inline void add_to_point(Pts& pts, vertex_descriptor_t<G> m, double w, const Eigen::Vector3d& p) {
-  if (w != 0) put(pts, m, from_eigen<point_t<G>>(Eigen::Vector3d(to_eigen(get(pts, m)) + w * p)));
-}
 
 /// After the face pass: border edges get their midpoints, border vertices
 /// their border neighbours in acc (two per vertex where the ring is used:
 /// the sum does not depend on the order).
-template <class G, class Pts, class Av>
-void border_edge_points(G& g, Pts& pts, const Av& av, const std::vector<std::uint32_t>& number,
+template <class G, class Pts, class Points>
+void border_edge_points(G& g, Pts& pts, Points& points, const std::vector<std::uint32_t>& number,
                         std::vector<Eigen::Vector3d>& acc) {
   for_each_old_edge(g, [&](std::uint32_t k, auto h, std::uint32_t a, std::uint32_t b, bool border) {
     if (!border) return;
     const Eigen::Vector3d pa = to_eigen(get(pts, source(h, g))), pb = to_eigen(get(pts, target(h, g)));
-    put(pts, av.vertex(number[k]), from_eigen<point_t<G>>(Eigen::Vector3d(0.5 * (pa + pb))));
+    points.set(number[k], Eigen::Vector3d(0.5 * (pa + pb)));
     acc[a] += pb;
     acc[b] += pa;
   });
 }
 
-/// The old vertices' new positions (acc[v]), written after every read.
+/// The old vertices' new positions (acc by vertex index), written after every read.
 template <class G, class Pts>
 void write_old_positions(const G& g, Pts& pts, const std::vector<Eigen::Vector3d>& acc) {
-  std::size_t i = 0;
+  auto vi = get(vertex_index, g);
   for (auto v : vertices(g)) {
-    if (i == acc.size()) break;
-    put(pts, v, from_eigen<point_t<G>>(acc[i++]));
+    const auto i = static_cast<std::size_t>(get(vi, v));
+    if (i >= acc.size()) break; // appended: iteration is by increasing index
+    put(pts, v, from_eigen<map_point_t<Pts>>(acc[i]));
   }
 }
 
 /// The visitor's masks of the old vertices (rules[v]; face points through
 /// face_mask as in emit_vertex_mask); border_edge by edge point number.
-template <class G, class Face_mask>
-void emit_vertex_masks(G& g, const Subdivision_visitor& vis, const Stars& st, const std::vector<std::uint32_t>& number,
+template <class G, class V, class Face_mask>
+void emit_vertex_masks(G& g, V& vis, const Stars& st, const std::vector<std::uint32_t>& number, std::size_t used,
                        const std::vector<double>& sharp, const std::vector<char>& border_edge,
                        const std::vector<Vertex_rule>& rules, Face_mask face_mask) {
-  const Neighbours nb = neighbours(g, st, number);
-  std::vector<double> sharp_by_number(sharp.empty() ? 0 : number.size());
-  for (std::size_t k = 0; k < sharp_by_number.size(); ++k) sharp_by_number[number[k]] = sharp[k];
+  const Neighbours nb = neighbours(g, st, number, used);
+  std::vector<double> sharp_by_number(sharp.empty() ? 0 : used);
+  if (!sharp.empty())
+    for (std::size_t k = 0; k < number.size(); ++k)
+      if (number[k] != k_none) sharp_by_number[number[k]] = sharp[k];
   std::vector<std::uint32_t> src;
   std::vector<double> w;
-  for (std::uint32_t v = 0; v < rules.size(); ++v)
+  auto vi = get(vertex_index, g);
+  for (auto vd : vertices(g)) {
+    const auto v = static_cast<std::uint32_t>(get(vi, vd));
+    if (v >= rules.size()) break;
     emit_vertex_mask<G>(vis, st, nb, rules[v], v, sharp_by_number,
                         [&](std::uint32_t k) { return border_edge[k] != 0; }, face_mask, src, w);
+  }
 }
 
-/// The children's sharpness: both halves of old edge k get max(0, s − 1),
-/// the other new edges (new_edges in all) 0.
+/// The children's sharpness (by edge index): both halves of old edge k get
+/// max(0, s − 1), the other new edges (index bound new_edges) 0. The other
+/// half of edge number i is edge other[i], or edge ne + i when other is
+/// empty (the bulk path on a dense mesh).
 inline void decrement_creases(std::vector<double>& sharp, const std::vector<std::uint32_t>& number,
-                              std::size_t new_edges) {
+                              const std::vector<std::uint32_t>& other, std::size_t new_edges) {
   if (sharp.empty()) return;
   const std::size_t ne = number.size();
   std::vector<double> child(new_edges, 0.0);
-  for (std::size_t k = 0; k < ne; ++k)
-    child[k] = child[ne + number[k]] = sharp[k] > 0 ? std::max(0.0, sharp[k] - 1.0) : 0.0;
+  for (std::size_t k = 0; k < ne; ++k) {
+    if (number[k] == k_none) continue;
+    const std::size_t half = other.empty() ? ne + number[k] : other[number[k]];
+    child[k] = child[half] = sharp[k] > 0 ? std::max(0.0, sharp[k] - 1.0) : 0.0;
+  }
   sharp = std::move(child);
 }
 
@@ -539,16 +537,17 @@ struct Mask {
 /// and the point of old edge x (numbered by first use, as Loop's) is the
 /// combination rule(x, mask) gives, read from the old mesh; the visitor
 /// gets the same masks (an old vertex: itself, weight 1).
-template <class G, class Rule>
-void interpolating_one_to_four_level(G& g, int level, const std::array<std::size_t, 4>& n,
-                                     const Subdivision_visitor& vis, Rule rule) {
+template <class G, class V, class Refiner, class Rule>
+void interpolating_one_to_four_level(G& g, const std::array<std::size_t, 4>& n, V& vis, const Refiner& refiner,
+                                     Rule rule) {
+  constexpr bool masks = visits_vertex_masks<V>;
   const std::size_t nv = n[0], ne = n[1], nf = n[2];
-  if (vis.on_level_begin) vis.on_level_begin(level, nv, nv + ne);
-  auto pts = get(vertex_point, g);
+  auto pts = refiner.pts;
   auto vi = get(vertex_index, g);
   auto ei = get(edge_index, g);
-  auto av = append_elements(g, ne, 0, 0);
-  std::vector<std::uint32_t> number(ne, k_none), src;
+  std::vector<std::uint32_t> number(index_bound(edge_index, g), k_none), src;
+  const std::size_t nvb = index_bound(vertex_index, g);
+  auto points = refiner.new_points(g, ne);
   std::uint32_t used = 0;
   Mask<G> mask;
   for_each_canonical_triangle(g, nf, [&](std::size_t, auto& xs) {
@@ -560,20 +559,23 @@ void interpolating_one_to_four_level(G& g, int level, const std::array<std::size
       rule(x, mask);
       Eigen::Vector3d p = Eigen::Vector3d::Zero();
       for (std::size_t t = 0; t < mask.vertex.size(); ++t) p += mask.weight[t] * to_eigen(get(pts, mask.vertex[t]));
-      put(pts, av.vertex(i), from_eigen<point_t<G>>(p));
-      if (vis.on_vertex) {
+      points.set(i, p);
+      if constexpr (masks) {
         src.clear();
         for (const auto v : mask.vertex) src.push_back(static_cast<std::uint32_t>(get(vi, v)));
-        vis.on_vertex(static_cast<std::uint32_t>(nv + i), src, mask.weight);
+        vis.on_vertex_mask(static_cast<std::uint32_t>(nv + i), src, mask.weight);
       }
     }
   });
-  if (vis.on_vertex) {
+  if constexpr (masks) {
     const double one = 1.0;
-    for (std::uint32_t v = 0; v < nv; ++v) vis.on_vertex(v, {&v, 1}, {&one, 1});
+    for (auto vd : vertices(g)) {
+      const auto v = static_cast<std::uint32_t>(get(vi, vd));
+      if (v >= nvb) break;
+      vis.on_vertex_mask(v, {&v, 1}, {&one, 1});
+    }
   }
-  refine_one_to_four(g, av, nv, ne, nf, number);
-  if (vis.on_level_end) vis.on_level_end(level);
+  refiner.one_to_four(g, points, nv, ne, nf, number);
 }
 
 /// Step 3 for Catmull-Clark: every old n-gon j (the first nf faces) becomes n
@@ -618,6 +620,157 @@ void cut_polygons(G& g, const Av& av, const Ae& ae, std::size_t nv, std::size_t 
   }
 }
 
+/// The new points of a level on the bulk path: vertices appended at once,
+/// positions written straight into them.
+template <class G, class Av, class Pts>
+struct Appended_points {
+  Av av;
+  Pts pts;
+  void set(std::size_t i, const Eigen::Vector3d& p) { put(pts, av.vertex(i), from_eigen<map_point_t<Pts>>(p)); }
+  [[gnu::always_inline]] void add(std::size_t i, double w, const Eigen::Vector3d& p) {
+    if (w != 0)
+      put(pts, av.vertex(i), from_eigen<map_point_t<Pts>>(Eigen::Vector3d(to_eigen(get(pts, av.vertex(i))) + w * p)));
+  }
+};
+
+/// The bulk path (a MutableFaceGraph without removed elements): elements
+/// appended with append_elements, linked with set_next/set_target/...;
+/// positions through the point map pts.
+template <class Pm>
+struct Bulk_refiner {
+  Pm pts;
+  template <class G>
+  auto new_points(G& g, std::size_t n) const {
+    auto av = append_elements(g, n, 0, 0);
+    return Appended_points<G, decltype(av), Pm>{std::move(av), pts};
+  }
+  /// Returns the other half of each split edge (empty: edge ne + i).
+  template <class G, class Points>
+  std::vector<std::uint32_t> one_to_four(G& g, const Points& points, std::size_t nv, std::size_t ne, std::size_t nf,
+                                         const std::vector<std::uint32_t>& number) const {
+    refine_one_to_four(g, points.av, nv, ne, nf, number);
+    return {};
+  }
+  template <class G, class Points>
+  std::vector<std::uint32_t> quads(G& g, const Points& points, std::size_t nv, std::size_t ne, std::size_t nf,
+                                   std::size_t nc, const std::vector<std::uint32_t>& number) const {
+    auto ae = append_elements(g, 0, ne + nc, nc - nf);
+    split_edges(g, points.av, ae, nv, ne, number);
+    cut_polygons(g, points.av, ae, nv, ne, nf);
+    return {};
+  }
+};
+
+/// The new points of a level on the local-operations path, kept until the
+/// operations make their vertices.
+struct Buffered_points {
+  std::vector<Eigen::Vector3d> p;
+  void set(std::size_t i, const Eigen::Vector3d& x) { p[i] = x; }
+  void add(std::size_t i, double w, const Eigen::Vector3d& x) {
+    if (w != 0) p[i] += w * x;
+  }
+};
+
+/// The local-operations path (any backend with split_edge and split_face,
+/// native or generic; removed elements allowed): the same refinement as the
+/// bulk path, one operation at a time, each reported to the visitor's
+/// per-operation hooks (on_split_edge, on_split_face).
+template <class V, class Pm>
+struct Local_refiner {
+  V* vis;
+  Pm pts;
+
+  template <class G>
+  Buffered_points new_points(G&, std::size_t n) const {
+    return {std::vector<Eigen::Vector3d>(n, Eigen::Vector3d::Zero())};
+  }
+
+  /// The old faces, then every old edge split at its point in first-use
+  /// order (edge number i keeps the half at its halfedge's source, as
+  /// split_edges); marks the new vertices in is_new; returns the index of
+  /// each new half.
+  template <class G>
+  std::vector<std::uint32_t> split_all(G& g, const Buffered_points& points, std::size_t ne,
+                                              const std::vector<std::uint32_t>& number, std::vector<char>& is_new,
+                                              std::vector<face_descriptor_t<G>>& old_faces) const {
+    using H = halfedge_descriptor_t<G>;
+    auto ei = get(edge_index, g);
+    auto vi = get(vertex_index, g);
+    old_faces.clear();
+    for (auto f : faces(g)) old_faces.push_back(f);
+    std::vector<H> eh(ne);
+    for (auto e : edges(g)) {
+      const auto k = static_cast<std::size_t>(get(ei, e));
+      if (k < number.size() && number[k] != k_none) eh[number[k]] = halfedge(e, g);
+    }
+    std::vector<std::uint32_t> other(ne);
+    std::vector<std::uint32_t> made(ne);
+    for (std::size_t i = 0; i < ne; ++i) {
+      // split_edge(h) keeps h's edge on the target side of h: split the
+      // opposite of halfedge(e), so that the old edge keeps its source's half
+      const H hn = *genmesh::split_edge(opposite(eh[i], g), g, *vis);
+      const auto m = target(hn, g);
+      put(pts, m, from_eigen<map_point_t<Pm>>(points.p[i]));
+      other[i] = static_cast<std::uint32_t>(get(ei, edge(hn, g)));
+      made[i] = static_cast<std::uint32_t>(get(vi, m));
+    }
+    is_new.assign(index_bound(vertex_index, g), 0);
+    for (std::uint32_t v : made) is_new[v] = 1;
+    return other;
+  }
+
+  /// The cycle of old face f after split_all, from the halfedge leaving its
+  /// lowest old vertex: old → m_0, m_0 → old, old → m_1, ...
+  template <class G>
+  static void split_cycle(const G& g, face_descriptor_t<G> f, const std::vector<char>& is_new,
+                          std::vector<halfedge_descriptor_t<G>>& xs) {
+    auto vi = get(vertex_index, g);
+    canonical_cycle(g, f, xs, [&](auto x) {
+      const auto v = static_cast<std::uint32_t>(get(vi, target(x, g)));
+      return is_new[v] ? k_none : v;
+    });
+  }
+
+  template <class G>
+  std::vector<std::uint32_t> one_to_four(G& g, const Buffered_points& points, std::size_t, std::size_t ne,
+                                         std::size_t, const std::vector<std::uint32_t>& number) const {
+    std::vector<char> is_new;
+    std::vector<face_descriptor_t<G>> old_faces;
+    std::vector<std::uint32_t> other = split_all(g, points, ne, number, is_new, old_faces);
+    std::vector<halfedge_descriptor_t<G>> xs;
+    for (const auto f : old_faces) {
+      split_cycle(g, f, is_new, xs);
+      // corner t (at the old vertex after m_t) is cut off as the next new face
+      for (std::size_t t = 0; t < 3; ++t)
+        genmesh::split_face(prev(xs[2 * t + 1], g), xs[(2 * t + 2) % 6], g, *vis);
+    }
+    return other;
+  }
+
+  template <class G>
+  std::vector<std::uint32_t> quads(G& g, const Buffered_points& points, std::size_t, std::size_t ne, std::size_t,
+                                   std::size_t, const std::vector<std::uint32_t>& number) const {
+    std::vector<char> is_new;
+    std::vector<face_descriptor_t<G>> old_faces;
+    std::vector<std::uint32_t> other = split_all(g, points, ne, number, is_new, old_faces);
+    std::vector<halfedge_descriptor_t<G>> xs;
+    std::size_t j = 0;
+    for (const auto f : old_faces) {
+      split_cycle(g, f, is_new, xs);
+      const std::size_t n = xs.size() / 2;
+      // quad 0 is cut off by m_0 → m_1, whose split makes the face point c
+      // (the old edge keeps m_0 – c, the new one is m_1 – c); then quad t by
+      // c → m_t+1; quad n − 1 stays f
+      const auto h = *genmesh::split_face(xs[0], xs[2], g, *vis);
+      const auto hc = *genmesh::split_edge(opposite(h, g), g, *vis);
+      put(pts, target(hc, g), from_eigen<map_point_t<Pm>>(points.p[ne + j]));
+      for (std::size_t t = 1; t + 1 < n; ++t) genmesh::split_face(h, xs[2 * (t + 1)], g, *vis);
+      ++j;
+    }
+    return other;
+  }
+};
+
 /// Counts {V, E, F, corners} of g; throws, naming the face, when a face
 /// cycle does not close or (face_size ≠ 0) a face has another size.
 template <class G>
@@ -644,133 +797,129 @@ std::array<std::size_t, 4> face_counts(const G& g, const char* scheme, std::size
   return {nv, ne, nf, nc};
 }
 
+/// The creases and corners after the last level, for the limit projection:
+/// sharpness in edge iteration order, corner flags in vertex iteration order
+/// (each empty when not given).
+struct Final_tags {
+  std::vector<double> sharp;
+  std::vector<char> corner;
+};
+
 /// The limit positions after the last level of a smoothing scheme (Loop,
 /// Catmull-Clark): tagged corners stay, border vertices get the border
 /// limit, the others interior(s, v); crease vertices see move_to_limit.
-template <class G, class Interior>
-void move_to_limit(G& g, const Subdivision_result& r, const std::vector<std::uint32_t>& corners,
-                   Boundary_rule boundary, Interior interior) {
-  std::vector<char> corner(r.vertices, 0);
-  for (std::uint32_t c : corners) corner[c] = 1;
-  move_to_limit(g, r.edge_sharpness, [&](const Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
-    if (corner[v]) return s.points[v];
+template <class G, class Interior, class Pm>
+void move_to_limit(G& g, const Final_tags& tags, Boundary_rule boundary, Interior interior, const Pm& pm) {
+  move_to_limit(g, tags.sharp, [&](const Snapshot& s, std::uint32_t v) -> Eigen::Vector3d {
+    if (!tags.corner.empty() && tags.corner[v]) return s.points[v];
     if (s.is_border_vertex(v)) return border_limit_point(s, v, boundary);
     return interior(s, v);
-  });
+  }, pm);
 }
 
 inline std::array<std::size_t, 4> one_to_four_counts(std::array<std::size_t, 4> n) {
   return {n[0] + n[1], 2 * n[1] + 3 * n[2], 4 * n[2], 12 * n[2]};
 }
 
-/// Runs `iterations` levels of scheme on g: in place (level(g, i, sharp) on
-/// g) when g allows it, else on a Halfedge_mesh copy linked back into g.
-/// check(g) throws (g untouched) before anything changes; grow(counts) gives
-/// the counts after one level, to reserve the last level's size once.
-template <class G, class Check, class Level>
-Subdivision_result run_in_place(G& g, int iterations, const char* scheme, std::vector<double> sharp,
-                                const std::vector<std::uint32_t>& corners, Check check, Level level,
-                                std::array<std::size_t, 4> (*grow)(std::array<std::size_t, 4>)) {
+/// The crease map's sharpness by edge index (empty when no map is given).
+/// Throws genmesh::invalid_input naming the edge (iteration order) for a
+/// negative or NaN sharpness.
+template <class G, class CreaseMap>
+std::vector<double> read_sharpness(const G& g, const CreaseMap& crease_map, const char* scheme) {
+  if constexpr (std::is_same_v<CreaseMap, Default_map>) {
+    return {};
+  } else {
+    auto ei = get(edge_index, g);
+    std::vector<double> sharp(index_bound(edge_index, g), 0.0);
+    std::size_t k = 0;
+    for (auto e : edges(g)) {
+      const double s = static_cast<double>(get(crease_map, e));
+      if (!(s >= 0))
+        throw invalid_input(std::string(scheme) + ": crease_map gives edge " + std::to_string(k) +
+                            " a negative or NaN sharpness (the mesh is unchanged)");
+      sharp[static_cast<std::size_t>(get(ei, e))] = s;
+      ++k;
+    }
+    return sharp;
+  }
+}
+
+/// The vertices the corner map tags, as vertex indices.
+template <class G, class CornerMap>
+std::vector<std::uint32_t> read_corners(const G& g, const CornerMap& corner_map) {
+  std::vector<std::uint32_t> out;
+  if constexpr (!std::is_same_v<CornerMap, Default_map>) {
+    auto vi = get(vertex_index, g);
+    for (auto v : vertices(g))
+      if (static_cast<bool>(get(corner_map, v))) out.push_back(static_cast<std::uint32_t>(get(vi, v)));
+  }
+  return out;
+}
+
+/// Runs `iterations` levels of scheme on g, in place: level(g, counts,
+/// sharp, corners, refiner) per level (sharp by edge index, corners as
+/// vertex indices), with the Bulk_refiner when g is a MutableFaceGraph
+/// without removed elements (arrays reserved once to the last level's
+/// size), else the Local_refiner. check(g) throws (g untouched) before
+/// anything changes; grow(counts) gives the counts after one level. The
+/// crease map receives the sharpness of every edge of the result; tags (if
+/// given) what the limit projection needs.
+template <class G, class CreaseMap, class CornerMap, class Pm, class Check, class Level, class V>
+Subdivision_result run_in_place(G& g, int iterations, const char* scheme, const CreaseMap& crease_map,
+                                const CornerMap& corner_map, const Pm& point_map, Check check, Level level,
+                                std::array<std::size_t, 4> (*grow)(std::array<std::size_t, 4>), V& vis,
+                                Final_tags* tags = nullptr) {
   if (iterations < 0) throw invalid_input(std::string(scheme) + ": iterations must be ≥ 0");
-  std::size_t nv = 0;
-  for (auto v : vertices(g)) (void)v, ++nv;
-  for (std::uint32_t c : corners)
-    if (c >= nv)
-      throw invalid_input(std::string(scheme) + ": corner vertex " + std::to_string(c) + " is out of range (" +
-                          std::to_string(nv) + " vertices)");
-  Subdivision_result r{0, nv, 0, {}};
+  std::vector<double> sharp = read_sharpness(g, crease_map, scheme);
+  Subdivision_result r{0, 0, 0};
+  for (auto v : vertices(g)) (void)v, ++r.vertices;
   if (iterations == 0) {
-    std::size_t ne = 0, nf = 0;
-    for (auto e : edges(g)) (void)e, ++ne;
-    for (auto f : faces(g)) (void)f, ++nf;
-    check_creases(sharp, ne, scheme);
-    r.faces = nf;
-    r.edge_sharpness = std::move(sharp);
+    for (auto f : faces(g)) (void)f, ++r.faces;
     return r;
   }
+  const std::array<std::size_t, 4> counts = check(g); // V, E, F, corners
+  const std::vector<std::uint32_t> corner_index = read_corners(g, corner_map);
+  const auto total = static_cast<std::size_t>(iterations);
+  std::array<std::size_t, 4> now = counts;
+  auto run = [&](const auto& refiner) {
+    vis.on_step("level", 0, total);
+    for (int i = 0; i < iterations; ++i) {
+      level(g, now, sharp, corner_index, refiner);
+      now = grow(now);
+      ++r.levels_done;
+      vis.on_step("level", static_cast<std::size_t>(r.levels_done), total);
+    }
+  };
+  bool bulk = false;
   if constexpr (In_place_refinable<G>) {
     if (is_dense(g)) {
-      check_creases(sharp, index_bound(halfedge_index, g) / 2, scheme);
-      const std::array<std::size_t, 4> counts = check(g); // V, E, F, corners
+      bulk = true;
       std::array<std::size_t, 4> last = counts;
       for (int i = 0; i < iterations; ++i) last = grow(last);
       reserve(g, static_cast<typename boost::graph_traits<G>::vertices_size_type>(last[0]),
               static_cast<typename boost::graph_traits<G>::edges_size_type>(last[1]),
               static_cast<typename boost::graph_traits<G>::faces_size_type>(last[2]));
-      std::array<std::size_t, 4> now = counts;
-      for (int i = 0; i < iterations; ++i) {
-        level(g, i, now, sharp);
-        now = grow(now);
-        ++r.levels_done;
-      }
-      r.vertices = now[0];
-      r.faces = now[2];
-      r.edge_sharpness = std::move(sharp);
-      return r;
+      run(Bulk_refiner<decltype(point_map_of(g, point_map))>{point_map_of(g, point_map)});
     }
   }
-  // The Halfedge_mesh copy: the snapshot numbers vertices, edges and faces in
-  // g's iteration order, and the copy is linked with these numbers.
-  Snapshot s = snapshot(g, scheme);
-  check_creases(sharp, s.num_edges(), scheme);
-  Halfedge_mesh<> copy;
-  {
-    Polygon_soup soup;
-    soup.points = s.points;
-    soup.offsets = s.face_begin;
-    soup.indices = s.corner_vertex;
-    std::vector<std::uint32_t> ce;
-    build_refined(soup, copy, s.corner_twin, &ce);
-    if (!sharp.empty()) {
-      std::vector<double> mine(s.num_edges(), 0.0);
-      for (std::size_t c = 0; c < ce.size(); ++c) mine[ce[c]] = sharp[s.corner_edge[c]];
-      sharp = std::move(mine);
-    }
-  }
-  s = Snapshot{};
-  const std::array<std::size_t, 4> counts = check(copy);
-  std::array<std::size_t, 4> last = counts;
-  for (int i = 0; i < iterations; ++i) last = grow(last);
-  copy.reserve(last[0], last[1], last[2]);
-  std::array<std::size_t, 4> now = counts;
-  for (int i = 0; i < iterations; ++i) {
-    level(copy, i, now, sharp);
-    now = grow(now);
-    ++r.levels_done;
-  }
-  // Back into g: faces in face order, each from next(halfedge(f)), twins by halfedge.
-  Polygon_soup out;
-  out.points.reserve(copy.n_vertices());
-  for (auto v : copy.vertices()) out.points.push_back(to_eigen(copy.point(v)));
-  std::vector<std::uint32_t> hc(copy.halfedges_size(), k_none), corner_h;
-  out.indices.reserve(copy.halfedges_size());
-  corner_h.reserve(copy.halfedges_size());
-  out.offsets.reserve(copy.n_faces() + 1);
-  std::vector<Halfedge_index> cycle;
-  for (auto f : copy.faces()) {
-    canonical_cycle(copy, f, cycle, [&](Halfedge_index x) { return copy.target(x).idx(); });
-    for (const Halfedge_index x : cycle) {
-      hc[x.idx()] = static_cast<std::uint32_t>(out.indices.size());
-      corner_h.push_back(x.idx());
-      out.indices.push_back(copy.source(x).idx());
-    }
-    out.offsets.push_back(static_cast<Polygon_soup::Index>(out.indices.size()));
-  }
-  std::vector<std::uint32_t> twin(out.indices.size());
-  for (std::size_t c = 0; c < twin.size(); ++c) twin[c] = hc[corner_h[c] ^ 1u];
-  copy = Halfedge_mesh<>();
-  std::vector<std::uint32_t> ce;
-  G fresh;
-  build_refined(out, fresh, std::move(twin), sharp.empty() ? nullptr : &ce);
-  g = std::move(fresh);
-  if (!sharp.empty()) {
-    std::vector<double> theirs(sharp.size(), 0.0);
-    for (std::size_t c = 0; c < ce.size(); ++c) theirs[ce[c]] = sharp[corner_h[c] / 2];
-    sharp = std::move(theirs);
-  }
+  if (!bulk) run(Local_refiner<V, decltype(point_map_of(g, point_map))>{&vis, point_map_of(g, point_map)});
   r.vertices = now[0];
   r.faces = now[2];
-  r.edge_sharpness = std::move(sharp);
+  if constexpr (!std::is_same_v<CreaseMap, Default_map>) { // the refined mesh's sharpness, edge by edge
+    CreaseMap out = crease_map; // a property map is a handle: writes reach the caller's storage
+    auto ei = get(edge_index, g);
+    for (auto e : edges(g)) {
+      const double s = sharp[static_cast<std::size_t>(get(ei, e))];
+      put(out, e, s);
+      if (tags) tags->sharp.push_back(s);
+    }
+  }
+  if (tags && !corner_index.empty()) {
+    std::vector<char> is_corner(index_bound(vertex_index, g), 0);
+    for (std::uint32_t c : corner_index) is_corner[c] = 1;
+    auto vi = get(vertex_index, g);
+    for (auto v : vertices(g)) tags->corner.push_back(is_corner[static_cast<std::size_t>(get(vi, v))]);
+  }
   return r;
 }
 

@@ -15,6 +15,8 @@
 #include <genmesh/polygon_soup.h>
 #include <genmesh/property_maps.h>
 #include <genmesh/soup_to_mesh.h>
+#include <genmesh/subdivision/types.h>
+#include <genmesh/visitor.h>
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
@@ -26,30 +28,26 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace genmesh {
 
-/// How a scheme treats the mesh border.
-enum class Boundary_rule {
-  smooth, ///< the border curve is refined with the cubic B-spline rules (1/8, 3/4, 1/8; 1/2, 1/2)
-  fixed,  ///< border vertices keep their positions; new border points are edge midpoints
-};
-
-/// What a subdivision did.
-struct Subdivision_result {
-  int levels_done = 0;        ///< levels applied
-  std::size_t vertices = 0;   ///< live counts after the last level
-  std::size_t faces = 0;
-  /// With creases given: the sharpness of every edge of the result, in edge
-  /// iteration order (feed it to the next call); empty otherwise.
-  std::vector<double> edge_sharpness;
-};
-
 namespace detail::subdivision {
 
 inline constexpr std::uint32_t k_none = 0xffffffffu;
+
+/// The vertex point map an option names, or g's own (Default_map).
+template <class G, class Pm>
+auto point_map_of(G& g, const Pm& pm) {
+  if constexpr (std::is_same_v<Pm, Default_map>) return get(vertex_point, g);
+  else return pm;
+}
+
+/// The point type of a vertex point map.
+template <class Pm>
+using map_point_t = std::remove_cvref_t<typename boost::property_traits<Pm>::value_type>;
 
 /// The old mesh, read once: points, face cycles as corners, twins, edges.
 struct Snapshot {
@@ -132,11 +130,11 @@ inline void set_vertex_corners(Snapshot& s) {
 /// when max_face_size is set and a face has another size than it (Loop, √3,
 /// butterfly take triangles only), or when a face cycle is corrupt; g is
 /// never touched.
-template <class G>
-Snapshot snapshot(G& g, const char* scheme, std::uint32_t required_face_size = 0) {
+template <class G, class Pm = Default_map>
+Snapshot snapshot(G& g, const char* scheme, std::uint32_t required_face_size = 0, const Pm& pm = {}) {
   using H = halfedge_descriptor_t<G>;
   Snapshot s;
-  auto pts = get(vertex_point, g);
+  auto pts = point_map_of(g, pm);
   auto vindex = get(vertex_index, g);
   auto hindex = get(halfedge_index, g);
   std::vector<std::uint32_t> vnum(index_bound(vertex_index, g), k_none);
@@ -310,12 +308,17 @@ inline Snapshot snapshot_of_soup(Polygon_soup&& soup, const std::vector<std::uin
 
 /// Replaces g by the mesh of soup (built into a fresh G, then moved into g),
 /// and records the counts.
-template <class G>
+template <class G, class Pm = Default_map>
 void rebuild(G& g, const Polygon_soup& soup, Subdivision_result& r, std::vector<std::uint32_t> twin = {},
-             std::vector<std::uint32_t>* corner_edge = nullptr) {
+             std::vector<std::uint32_t>* corner_edge = nullptr, const Pm& pm = {}) {
   G fresh;
   build_refined(soup, fresh, std::move(twin), corner_edge);
   g = std::move(fresh);
+  if constexpr (!std::is_same_v<Pm, Default_map>) { // the caller's map gets the positions too
+    Pm out = pm;
+    std::size_t k = 0;
+    for (auto v : vertices(g)) put(out, v, from_eigen<map_point_t<Pm>>(soup.points[k++]));
+  }
   ++r.levels_done;
   r.vertices = soup.num_points();
   r.faces = soup.num_faces();
@@ -403,16 +406,22 @@ struct Refined {
 /// soup to snapshot directly, the last one rebuilds g. With creases (sharp not
 /// empty) the sharpness follows the edges: half(s, c, i) is the refined soup
 /// corner of half i of old corner c.
-template <class G, class Level, class Half>
+template <class G, class Level, class Half, class V, class Pm = Default_map>
 Subdivision_result run_levels(G& g, int iterations, const char* scheme, std::uint32_t face_size,
-                              std::vector<double>& sharp, Level level, Half half) {
+                              std::vector<double>& sharp, Level level, Half half, V& vis, const Pm& pm = {}) {
   if (iterations < 0) throw invalid_input(std::string(scheme) + ": iterations must be ≥ 0");
-  check_creases(sharp, static_cast<std::size_t>(num_edges(g)), scheme);
-  Subdivision_result r{0, static_cast<std::size_t>(num_vertices(g)), static_cast<std::size_t>(num_faces(g)), {}};
+  // live counts by iteration: num_* may count removed elements (Surface_mesh)
+  std::size_t nv = 0, ne = 0, nf = 0;
+  for (auto v : vertices(g)) (void)v, ++nv;
+  for (auto e : edges(g)) (void)e, ++ne;
+  for (auto f : faces(g)) (void)f, ++nf;
+  check_creases(sharp, ne, scheme);
+  Subdivision_result r{0, nv, nf};
   if (iterations > 0) {
-    Snapshot s = snapshot(g, scheme, face_size);
+    Snapshot s = snapshot(g, scheme, face_size, pm);
     std::vector<std::uint32_t> corner_edge, remap;
     for (int i = 0; i < iterations; ++i) {
+      vis.on_step("level", static_cast<std::size_t>(i), static_cast<std::size_t>(iterations));
       Refined out = level(s, i);
       std::size_t new_edges = 0;
       if (i + 1 < iterations) {
@@ -431,24 +440,24 @@ Subdivision_result run_levels(G& g, int iterations, const char* scheme, std::uin
                                   [&](std::uint32_t c, int h) { return half(s, c, h); });
         s = std::move(next);
       } else {
-        rebuild(g, out.soup, r, std::move(out.twin), sharp.empty() ? nullptr : &corner_edge);
+        rebuild(g, out.soup, r, std::move(out.twin), sharp.empty() ? nullptr : &corner_edge, pm);
         if (!sharp.empty())
           sharp = child_sharpness(s, sharp, corner_edge, static_cast<std::size_t>(num_edges(g)),
                                   [&](std::uint32_t c, int h) { return half(s, c, h); });
       }
     }
+    vis.on_step("level", static_cast<std::size_t>(iterations), static_cast<std::size_t>(iterations));
   }
-  r.edge_sharpness = sharp;
   return r;
 }
 
 /// Writes limit positions into g after the last level: limit(s, v) for every
 /// vertex of s (= snapshot(g)), through g's point map in vertex order.
-template <class G, class Limit>
-void move_to_limit(G& g, const std::vector<double>& sharp, Limit limit) {
-  Snapshot s = snapshot(g, "limit positions");
+template <class G, class Limit, class Pm = Default_map>
+void move_to_limit(G& g, const std::vector<double>& sharp, Limit limit, const Pm& pm = {}) {
+  Snapshot s = snapshot(g, "limit positions", 0, pm);
   const Crease_stars cs = sharp.empty() ? Crease_stars{} : crease_stars(s, sharp);
-  auto pts = get(vertex_point, g);
+  auto pts = point_map_of(g, pm);
   std::uint32_t v = 0;
   for (auto vd : vertices(g)) {
     Eigen::Vector3d p;
@@ -456,7 +465,7 @@ void move_to_limit(G& g, const std::vector<double>& sharp, Limit limit) {
       p = cs.count[v] == 2 ? Eigen::Vector3d((cs.ends[v] + 4.0 * s.points[v]) / 6.0) : s.points[v];
     else
       p = limit(s, v);
-    put(pts, vd, from_eigen<point_t<G>>(p));
+    put(pts, vd, from_eigen<map_point_t<decltype(pts)>>(p));
     ++v;
   }
 }
