@@ -26,6 +26,13 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/IO/polygon_soup_io.h>
 
+#include <boost/graph/breadth_first_search.hpp>
+#include <boost/graph/connected_components.hpp>
+#include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/graph/graph_concepts.hpp>
+#include <boost/graph/visitors.hpp>
+#include <boost/property_map/function_property_map.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -690,6 +697,162 @@ TEST(GenmeshToCgal, EigenPointsThroughCgalPointMap) {
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(em));
   EXPECT_NE(live_counts(em)[2], 2u * 60u); // remeshing did change the mesh
   EXPECT_EQ(ordered_soup(em), ordered_soup(sm_ref));
+}
+
+} // namespace
+
+// ---- Boost's and CGAL's generic graph code on every backend -----------------
+// (issue 10, point 7: Boost's PropertyGraph concept wants the three-argument
+// get(boost::vertex_index, g, v); graph code that walks a vertex's edges wants
+// out_edges / in_edges / degrees and the bidirectional traversal category.)
+
+namespace {
+
+/// The concept checks Boost's and CGAL's graph algorithms rely on, for G.
+template <class G>
+struct Generic_graph_checks {
+  using V = typename boost::graph_traits<G>::vertex_descriptor;
+  using H = typename boost::graph_traits<G>::halfedge_descriptor;
+  using E = typename boost::graph_traits<G>::edge_descriptor;
+  using F = typename boost::graph_traits<G>::face_descriptor;
+  BOOST_CONCEPT_ASSERT((boost::VertexListGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((boost::EdgeListGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((boost::IncidenceGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((boost::BidirectionalGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((boost::AdjacencyGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((boost::ReadablePropertyGraphConcept<G, V, boost::vertex_index_t>));
+  BOOST_CONCEPT_ASSERT((boost::ReadablePropertyGraphConcept<G, E, boost::edge_index_t>));
+  BOOST_CONCEPT_ASSERT((boost::ReadablePropertyGraphConcept<G, H, CGAL::halfedge_index_t>));
+  BOOST_CONCEPT_ASSERT((boost::ReadablePropertyGraphConcept<G, F, CGAL::face_index_t>));
+  BOOST_CONCEPT_ASSERT((CGAL::HalfedgeGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((CGAL::HalfedgeListGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((CGAL::FaceGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((CGAL::FaceListGraphConcept<G>));
+  static_assert(std::is_convertible_v<typename boost::graph_traits<G>::traversal_category,
+                                      boost::bidirectional_graph_tag>);
+  static_assert(std::is_convertible_v<typename boost::graph_traits<G>::traversal_category,
+                                      boost::adjacency_graph_tag>);
+};
+static_assert(sizeof(Generic_graph_checks<Hmesh>) > 0);
+static_assert(sizeof(Generic_graph_checks<genmesh::Halfedge_mesh<>>) > 0);
+static_assert(sizeof(Generic_graph_checks<genmesh::Incidence_mesh<>>) > 0);
+static_assert(sizeof(Generic_graph_checks<genmesh::Incidence_mesh<Point>>) > 0);
+static_assert(sizeof(Generic_graph_checks<Surface_mesh>) > 0);
+
+/// Two components: a grid with a hole (border, valences 2 to 6) and a
+/// tetrahedron beside it.
+genmesh::Polygon_soup two_component_soup() {
+  genmesh::Polygon_soup s = genmesh::make_grid_with_hole(6);
+  const genmesh::Polygon_soup t = genmesh::make_tetrahedron();
+  const auto base = static_cast<genmesh::Polygon_soup::Index>(s.num_points());
+  for (const auto& p : t.points) s.add_point(p.x() + 10, p.y(), p.z());
+  for (std::size_t f = 0; f < t.num_faces(); ++f) {
+    std::vector<genmesh::Polygon_soup::Index> c;
+    for (auto i : t.face(f)) c.push_back(i + base);
+    s.add_face(c);
+  }
+  return s;
+}
+
+/// What generic graph code computes on g, per vertex in index order: its
+/// component (boost::connected_components), hop distance from vertex 0
+/// (boost::breadth_first_search), edge-length distance from vertex 0
+/// (boost::dijkstra_shortest_paths), sorted neighbours through out_edges,
+/// in_edges and adjacent_vertices, and the degrees.
+struct Graph_walk {
+  std::vector<int> component;
+  std::vector<std::size_t> hops;
+  std::vector<double> distance;
+  std::vector<std::vector<std::size_t>> out_neighbours, in_neighbours, adjacent;
+  std::vector<std::size_t> out_degree, in_degree;
+};
+
+template <class G>
+Graph_walk walk_graph(const G& g) {
+  using V = typename boost::graph_traits<G>::vertex_descriptor;
+  using E = typename boost::graph_traits<G>::edge_descriptor;
+  const auto vindex = get(boost::vertex_index, g);
+  const std::size_t n = num_vertices(g);
+  Graph_walk w;
+  w.component.assign(n, -1);
+  const auto component = boost::make_iterator_property_map(w.component.begin(), vindex);
+  boost::connected_components(g, component, boost::vertex_index_map(vindex));
+
+  const V start = *vertices(g).begin();
+  w.hops.assign(n, 0);
+  const auto hops = boost::make_iterator_property_map(w.hops.begin(), vindex);
+  boost::breadth_first_search(
+      g, start,
+      boost::visitor(boost::make_bfs_visitor(boost::record_distances(hops, boost::on_tree_edge())))
+          .vertex_index_map(vindex));
+
+  w.distance.assign(n, 0.0);
+  const auto length = boost::make_function_property_map<E, double>([&g](E e) {
+    return (genmesh::to_eigen(get(get(genmesh::vertex_point, g), source(e, g))) -
+            genmesh::to_eigen(get(get(genmesh::vertex_point, g), target(e, g))))
+        .norm();
+  });
+  std::vector<V> pred(n);
+  boost::dijkstra_shortest_paths(
+      g, start,
+      boost::weight_map(length)
+          .vertex_index_map(vindex)
+          .predecessor_map(boost::make_iterator_property_map(pred.begin(), vindex))
+          .distance_map(boost::make_iterator_property_map(w.distance.begin(), vindex)));
+
+  for (V v : vertices(g)) {
+    std::vector<std::size_t> out, in, adj;
+    for (E e : boost::make_iterator_range(out_edges(v, g))) {
+      EXPECT_EQ(source(e, g), v);
+      out.push_back(get(boost::vertex_index, g, target(e, g)));
+    }
+    for (E e : boost::make_iterator_range(in_edges(v, g))) {
+      EXPECT_EQ(target(e, g), v);
+      in.push_back(get(boost::vertex_index, g, source(e, g)));
+    }
+    for (V u : boost::make_iterator_range(adjacent_vertices(v, g))) adj.push_back(get(vindex, u));
+    std::sort(out.begin(), out.end());
+    std::sort(in.begin(), in.end());
+    std::sort(adj.begin(), adj.end());
+    w.out_neighbours.push_back(out);
+    w.in_neighbours.push_back(in);
+    w.adjacent.push_back(adj);
+    w.out_degree.push_back(out_degree(v, g));
+    w.in_degree.push_back(in_degree(v, g));
+  }
+  return w;
+}
+
+template <class T>
+class Generic_graph_code : public ::testing::Test {};
+TYPED_TEST_SUITE(Generic_graph_code, genmesh_test::Backends);
+
+TYPED_TEST(Generic_graph_code, BoostSearchesOverOutEdgesAgreeWithHalfedgeMesh) {
+  const genmesh::Polygon_soup soup = two_component_soup();
+  TypeParam g;
+  genmesh::build_mesh(soup, g);
+  genmesh::Halfedge_mesh<> reference;
+  genmesh::build_mesh(soup, reference);
+
+  const Graph_walk w = walk_graph(g), r = walk_graph(reference);
+  ASSERT_EQ(w.component.size(), soup.num_points());
+  EXPECT_EQ(*std::max_element(w.component.begin(), w.component.end()), 1);
+  EXPECT_EQ(w.component, r.component);
+  EXPECT_EQ(w.hops, r.hops);
+  ASSERT_EQ(w.distance.size(), r.distance.size());
+  for (std::size_t i = 0; i < w.distance.size(); ++i) EXPECT_NEAR(w.distance[i], r.distance[i], 1e-12) << i;
+  EXPECT_EQ(w.out_neighbours, r.out_neighbours);
+  EXPECT_EQ(w.in_neighbours, w.out_neighbours); // undirected: the same neighbours both ways
+  EXPECT_EQ(w.adjacent, w.out_neighbours);
+  EXPECT_EQ(w.out_degree, r.out_degree);
+  EXPECT_EQ(w.in_degree, r.in_degree);
+  // The tetrahedron is unreachable from vertex 0: BFS leaves it at 0 hops,
+  // Dijkstra at infinity.
+  EXPECT_EQ(w.hops.back(), 0u);
+  EXPECT_GT(w.distance.back(), 1e300);
+  std::size_t degree_sum = 0;
+  for (auto d : w.out_degree) degree_sum += d;
+  EXPECT_EQ(degree_sum, 2 * static_cast<std::size_t>(num_edges(g)));
 }
 
 } // namespace

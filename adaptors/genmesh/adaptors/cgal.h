@@ -33,8 +33,9 @@
 //   boost::property_map<Halfedge_mesh<P>, CGAL::vertex_point_t> and
 //   get(CGAL::vertex_point, m) (also get/put(vertex_point, m, v[, p]));
 //   boost::edge_weight (edge lengths, for CGAL points);
-//   boost::vertex_index_t, CGAL::halfedge_index_t, boost::edge_index_t,
-//   CGAL::face_index_t maps (the raw idx());
+//   CGAL::halfedge_index_t and CGAL::face_index_t maps (the raw idx(), with
+//   the three-argument get; also on Incidence_mesh; boost::vertex_index_t
+//   and boost::edge_index_t come with the mesh headers);
 //   CGAL::dynamic_{vertex,halfedge,edge,face}_property_t<T> maps, backed by
 //   the mesh's own anonymous typed properties (vector speed; removed when the
 //   last copy of the map goes), or for a const mesh a vector sized by the
@@ -391,17 +392,20 @@ struct property_map<genmesh::Halfedge_mesh<P>, CGAL::vertex_point_t> {
   using const_type = type;
 };
 
-#define GENMESH_HM_INDEX_PROPERTY_MAP(TAG, INDEX)                                        \
-  template <class P>                                                                   \
-  struct property_map<genmesh::Halfedge_mesh<P>, TAG> {                                \
-    using type = genmesh::Index_map<genmesh::INDEX>;                                   \
-    using const_type = type;                                                           \
-  };
-GENMESH_HM_INDEX_PROPERTY_MAP(boost::vertex_index_t, Vertex_index)
-GENMESH_HM_INDEX_PROPERTY_MAP(CGAL::halfedge_index_t, Halfedge_index)
-GENMESH_HM_INDEX_PROPERTY_MAP(boost::edge_index_t, Edge_index)
-GENMESH_HM_INDEX_PROPERTY_MAP(CGAL::face_index_t, Face_index)
-#undef GENMESH_HM_INDEX_PROPERTY_MAP
+// CGAL's halfedge and face index tags on every genmesh mesh (Boost's
+// vertex_index and edge_index: <genmesh/detail/mesh_functions.h>).
+template <template <class> class M, class P>
+  requires genmesh::detail::is_genmesh_mesh<M>
+struct property_map<M<P>, CGAL::halfedge_index_t> {
+  using type = genmesh::Index_map<genmesh::Halfedge_index>;
+  using const_type = type;
+};
+template <template <class> class M, class P>
+  requires genmesh::detail::is_genmesh_mesh<M>
+struct property_map<M<P>, CGAL::face_index_t> {
+  using type = genmesh::Index_map<genmesh::Face_index>;
+  using const_type = type;
+};
 
 #define GENMESH_HM_DYNAMIC_PROPERTY_MAP(TAG, INDEX)                                      \
   template <class P, class T>                                                          \
@@ -452,22 +456,28 @@ detail::Cgal_edge_length_map<K> get(boost::edge_weight_t, const Halfedge_mesh<CG
   return {&m};
 }
 
-/// Raw indices (dense only when m has no removed elements).
-template <class P>
-Index_map<Vertex_index> get(boost::vertex_index_t, const Halfedge_mesh<P>&) {
+/// CGAL's halfedge and face index maps of any genmesh mesh (Halfedge_mesh,
+/// Incidence_mesh), two- and three-argument get as Boost's PropertyGraph
+/// concept asks: raw indices, dense only when m has no removed elements.
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Index_map<Halfedge_index> get(CGAL::halfedge_index_t, const M<P>&) {
   return {};
 }
-template <class P>
-Index_map<Halfedge_index> get(CGAL::halfedge_index_t, const Halfedge_mesh<P>&) {
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t get(CGAL::halfedge_index_t, const M<P>&, Halfedge_index h) {
+  return h.idx();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Index_map<Face_index> get(CGAL::face_index_t, const M<P>&) {
   return {};
 }
-template <class P>
-Index_map<Edge_index> get(boost::edge_index_t, const Halfedge_mesh<P>&) {
-  return {};
-}
-template <class P>
-Index_map<Face_index> get(CGAL::face_index_t, const Halfedge_mesh<P>&) {
-  return {};
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t get(CGAL::face_index_t, const M<P>&, Face_index f) {
+  return f.idx();
 }
 
 // Dynamic properties. The by-value tag and the Halfedge_mesh parameter make
