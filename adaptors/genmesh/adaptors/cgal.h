@@ -19,11 +19,14 @@
 //   Iterate vertices(g) for live elements; size scratch by index_bound.
 // - Polyhedron_3 has index maps only when its items carry ids
 //   (CGAL::Polyhedron_items_with_id_3). get(genmesh::vertex_index, p) then
-//   checks the ids (one O(n) pass per call: get the map once, not per
-//   element) and renumbers them in iteration order if they are not a
-//   valid numbering (writing to the ids of a const polyhedron, as CGAL's own
-//   get_initialized_*_index_map does); maps obtained before a later edit go
-//   stale. A Polyhedron_3 without ids has points but no index maps:
+//   makes sure the ids are a valid numbering, renumbering them in iteration
+//   order if not (writing to the ids of a const polyhedron, as CGAL's own
+//   get_initialized_*_index_map does). The check is O(size) once after each
+//   edit and O(1) after that (a per-thread stamp of sizes and last elements,
+//   see detail::ensure_polyhedron_ids), so asking for the map per element
+//   costs nothing; maps obtained before a later edit go stale. Code that
+//   writes ids by hand behind genmesh's back between two calls, keeping
+//   sizes and last elements, must renumber them validly itself. A Polyhedron_3 without ids has points but no index maps:
 //   HasIndexMap is false and genmesh code must fall back to hashing
 //   descriptors.
 //
@@ -77,6 +80,7 @@
 #include <CGAL/squared_distance_3.h>
 
 #include <cstddef>
+#include <iterator>
 #include <memory>
 #include <type_traits>
 #include <utility>
@@ -162,12 +166,12 @@ bool ids_are_numbering(It first, It last, std::size_t n, Id id) {
   return true;
 }
 
-// Makes the polyhedron's vertex/halfedge/face ids a valid numbering (halfedge
-// ids paired: opposite halfedges get 2k and 2k+1, so edge id = halfedge id / 2),
-// touching nothing when they already are one.
+// Renumbers the polyhedron's vertex/halfedge/face ids where they are not a
+// valid numbering (halfedge ids paired: opposite halfedges get 2k and 2k+1,
+// so edge id = halfedge id / 2), touching nothing when they already are one.
+// O(size).
 template <class Poly>
-void ensure_polyhedron_ids(const Poly& cp) {
-  Poly& p = const_cast<Poly&>(cp);
+void number_polyhedron_ids(Poly& p) {
   if (!ids_are_numbering(p.vertices_begin(), p.vertices_end(), p.size_of_vertices(),
                          [](const auto& v) { return v.id(); })) {
     std::size_t i = 0;
@@ -189,6 +193,66 @@ void ensure_polyhedron_ids(const Poly& cp) {
     std::size_t i = 0;
     for (auto f = p.facets_begin(); f != p.facets_end(); ++f) f->id() = i++;
   }
+}
+
+// What a polyhedron looked like when its ids were last found to be a valid
+// numbering: its address, its three sizes, and the address and id of the
+// last vertex, halfedge and facet. Polyhedron_3 only appends elements (to
+// the end of its lists, with the id -1 of a new item or the id copied from
+// a live one) and removes them; so after any edit that could break the
+// numbering, a size differs or the last element is another one, at another
+// address or (memory reused) with another id. Comparing stamps is O(1).
+struct Polyhedron_id_stamp {
+  const void* poly = nullptr;
+  std::size_t sizes[3] = {0, 0, 0};
+  const void* last[3] = {nullptr, nullptr, nullptr};
+  std::size_t last_id[3] = {0, 0, 0};
+  bool operator==(const Polyhedron_id_stamp&) const = default;
+};
+
+template <class It>
+void stamp_last(It first, It last, const void*& address, std::size_t& id) {
+  if (first == last) return;
+  const auto& x = *std::prev(last);
+  address = &x;
+  id = x.id();
+}
+
+template <class Poly>
+Polyhedron_id_stamp polyhedron_id_stamp(const Poly& p) {
+  Polyhedron_id_stamp s;
+  s.poly = &p;
+  s.sizes[0] = p.size_of_vertices();
+  s.sizes[1] = p.size_of_halfedges();
+  s.sizes[2] = p.size_of_facets();
+  stamp_last(p.vertices_begin(), p.vertices_end(), s.last[0], s.last_id[0]);
+  stamp_last(p.halfedges_begin(), p.halfedges_end(), s.last[1], s.last_id[1]);
+  stamp_last(p.facets_begin(), p.facets_end(), s.last[2], s.last_id[2]);
+  return s;
+}
+
+// Makes the polyhedron's ids a valid numbering (number_polyhedron_ids) unless
+// this thread found them valid since the polyhedron's last edit: a stamp
+// comparison, O(1), so get(genmesh::vertex_index, p) may be called per
+// element. The stamps of the last 16 polyhedra are kept per thread (a
+// polyhedron that drops out is checked again, O(size), on its next use).
+// Writes to the ids of a const polyhedron, as CGAL's own
+// get_initialized_*_index_map does.
+template <class Poly>
+void ensure_polyhedron_ids(const Poly& cp) {
+  constexpr std::size_t slots = 16;
+  thread_local Polyhedron_id_stamp seen[slots];
+  thread_local std::size_t next_slot = 0;
+  const Polyhedron_id_stamp now = polyhedron_id_stamp(cp);
+  std::size_t slot = slots;
+  for (std::size_t i = 0; i < slots; ++i) {
+    if (seen[i] == now) return;
+    if (seen[i].poly == now.poly) slot = i;
+  }
+  Poly& p = const_cast<Poly&>(cp);
+  number_polyhedron_ids(p);
+  if (slot == slots) slot = next_slot++ % slots;
+  seen[slot] = polyhedron_id_stamp(cp);
 }
 
 // The index map of a Polyhedron_3 whose items carry ids.
