@@ -1000,7 +1000,9 @@ TEST(CgalToGenmesh, EverySchemeOnPolyhedronAndOpenMeshEqualsHalfedgeMesh) {
       ASSERT_GT(expected.faces.size(), in.soup.num_faces());
       EXPECT_EQ(subdivided<Polyhedron_with_ids>(in.soup, s, 2), expected);
       EXPECT_EQ(subdivided<Om_poly_d>(in.soup, s, 2), expected);
-      if (all_triangles(in.soup) && triangles_only(s)) EXPECT_EQ(subdivided<Om_tri_d>(in.soup, s, 2), expected);
+      if (all_triangles(in.soup) && triangles_only(s)) {
+        EXPECT_EQ(subdivided<Om_tri_d>(in.soup, s, 2), expected);
+      }
     }
   }
 }
