@@ -55,7 +55,7 @@ bool read_and_build(const std::string& path, Mesh& mesh) {
 }
 
 // What genmesh info prints: counts, boundary loops, components, χ, validity.
-bool report(const std::string& name, const Mesh& mesh) {
+bool report(const std::string& name, Mesh& mesh) {
   const bool valid = CGAL::is_valid_polygon_mesh(mesh);
   std::vector<Mesh::Halfedge_index> borders;
   PMP::extract_boundary_cycles(mesh, std::back_inserter(borders));
