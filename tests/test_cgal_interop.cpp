@@ -13,6 +13,7 @@
 #include <genmesh/adaptors/openmesh.h>
 #include <genmesh/concepts.h>
 #include <genmesh/generators.h>
+#include <genmesh/subdivision.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -25,6 +26,13 @@
 #include <CGAL/boost/graph/graph_concepts.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/IO/polygon_soup_io.h>
+
+#include <boost/graph/breadth_first_search.hpp>
+#include <boost/graph/connected_components.hpp>
+#include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/graph/graph_concepts.hpp>
+#include <boost/graph/visitors.hpp>
+#include <boost/property_map/function_property_map.hpp>
 
 #include <gtest/gtest.h>
 
@@ -201,6 +209,14 @@ std::size_t count(const Range& r) {
 template <class G>
 std::array<std::size_t, 3> live_counts(const G& g) {
   return {count(vertices(g)), count(edges(g)), count(faces(g))};
+}
+
+/// The k-th live face in iteration order.
+template <class G>
+typename boost::graph_traits<G>::face_descriptor nth_face(const G& g, std::size_t k) {
+  auto it = faces(g).begin();
+  std::advance(it, static_cast<std::ptrdiff_t>(k % count(faces(g))));
+  return *it;
 }
 
 /// The k-th live edge in iteration order.
@@ -391,15 +407,79 @@ TEST(CgalToGenmesh, PolyhedronCountsPointsAndIds) {
   EXPECT_TRUE(is_permutation(fs, index_bound(genmesh::face_index, poly)));
 
   // A valid numbering of the user's is kept (here: reversed order); an
-  // invalid one (a duplicate id) is replaced by a fresh numbering.
+  // invalid one (a duplicate id) is replaced by a fresh numbering at the
+  // next edit (ids written by hand are not watched: see cgal.h).
   std::size_t next_id = num_vertices(poly);
   for (auto v : vertices(poly)) v->id() = --next_id;
   (void)get(genmesh::vertex_index, poly);
   EXPECT_EQ((*vertices(poly).begin())->id(), num_vertices(poly) - 1);
   (*vertices(poly).begin())->id() = (*std::next(vertices(poly).begin()))->id();
+  CGAL::Euler::split_edge(*halfedges(poly).begin(), poly);
   vs.clear();
   for (auto v : vertices(poly)) vs.push_back(get(get(genmesh::vertex_index, poly), v));
   EXPECT_TRUE(is_permutation(vs, num_vertices(poly)));
+}
+
+/// All four genmesh index maps of p are valid numberings (permutations of
+/// [0, index_bound), halfedges paired), each map asked for per element.
+template <class Poly>
+::testing::AssertionResult polyhedron_ids_valid(const Poly& p) {
+  auto check = [](std::vector<std::size_t> ids, std::size_t bound, const char* what) {
+    std::sort(ids.begin(), ids.end());
+    for (std::size_t k = 0; k < ids.size(); ++k)
+      if (ids[k] != k) return ::testing::AssertionFailure() << what << " id " << k << " missing";
+    if (ids.size() != bound) return ::testing::AssertionFailure() << what << " bound " << bound;
+    return ::testing::AssertionSuccess();
+  };
+  std::vector<std::size_t> vs, hs, es, fs;
+  for (auto v : vertices(p)) vs.push_back(get(get(genmesh::vertex_index, p), v));
+  for (auto h : halfedges(p)) {
+    hs.push_back(get(get(genmesh::halfedge_index, p), h));
+    if ((hs.back() ^ 1u) != get(get(genmesh::halfedge_index, p), opposite(h, p)))
+      return ::testing::AssertionFailure() << "halfedge ids not paired";
+  }
+  for (auto e : edges(p)) es.push_back(get(get(genmesh::edge_index, p), e));
+  for (auto f : faces(p)) fs.push_back(get(get(genmesh::face_index, p), f));
+  for (auto r : {check(vs, index_bound(genmesh::vertex_index, p), "vertex"),
+                 check(hs, index_bound(genmesh::halfedge_index, p), "halfedge"),
+                 check(es, index_bound(genmesh::edge_index, p), "edge"),
+                 check(fs, index_bound(genmesh::face_index, p), "face")})
+    if (!r) return r;
+  return ::testing::AssertionSuccess();
+}
+
+// The index maps stay valid numberings through every kind of edit, though
+// asking for them is O(1) between edits: elements appended with fresh ids
+// (split_edge, add_center_vertex), copied with an old element's id
+// (split_vertex copies the vertex), removed from the middle (join_vertex,
+// remove_center_vertex), and edit pairs that restore every size.
+TEST(CgalToGenmesh, PolyhedronIdsFollowEveryEdit) {
+  Polyhedron_with_ids poly;
+  build_with_cgal(genmesh::make_icosphere(1), poly);
+  ASSERT_TRUE(polyhedron_ids_valid(poly));
+  const std::size_t nv = num_vertices(poly), nf = num_faces(poly);
+  for (int round = 0; round < 6; ++round) {
+    auto h = nth_edge(poly, 7 * round + 3).halfedge();
+    h = CGAL::Euler::split_edge(h, poly); // new vertex, fresh ids
+    ASSERT_TRUE(polyhedron_ids_valid(poly)) << "split_edge, round " << round;
+    const auto c = CGAL::Euler::add_center_vertex(halfedge(nth_face(poly, 5 * round), poly), poly);
+    ASSERT_TRUE(polyhedron_ids_valid(poly)) << "add_center_vertex, round " << round;
+    CGAL::Euler::remove_center_vertex(c, poly); // removes from the middle
+    ASSERT_TRUE(polyhedron_ids_valid(poly)) << "remove_center_vertex, round " << round;
+    // split then join again: every size as before, last elements not.
+    const auto g = CGAL::Euler::split_vertex(h, opposite(next(h, poly), poly), poly);
+    ASSERT_TRUE(polyhedron_ids_valid(poly)) << "split_vertex, round " << round;
+    CGAL::Euler::join_vertex(g, poly);
+    ASSERT_TRUE(polyhedron_ids_valid(poly)) << "join_vertex, round " << round;
+  }
+  EXPECT_EQ(num_vertices(poly), nv + 6);
+  EXPECT_EQ(num_faces(poly), nf);
+  // A copy (same ids) and a fresh polyhedron: each numbered on its own.
+  Polyhedron_with_ids copy = poly;
+  EXPECT_TRUE(polyhedron_ids_valid(copy));
+  CGAL::Euler::split_edge(*halfedges(copy).begin(), copy);
+  EXPECT_TRUE(polyhedron_ids_valid(copy));
+  EXPECT_TRUE(polyhedron_ids_valid(poly));
 }
 
 TEST(CgalToGenmesh, OpenMeshCountsAndPoints) {
@@ -690,6 +770,241 @@ TEST(GenmeshToCgal, EigenPointsThroughCgalPointMap) {
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(em));
   EXPECT_NE(live_counts(em)[2], 2u * 60u); // remeshing did change the mesh
   EXPECT_EQ(ordered_soup(em), ordered_soup(sm_ref));
+}
+
+} // namespace
+
+// ---- Boost's and CGAL's generic graph code on every backend -----------------
+// (issue 10, point 7: Boost's PropertyGraph concept wants the three-argument
+// get(boost::vertex_index, g, v); graph code that walks a vertex's edges wants
+// out_edges / in_edges / degrees and the bidirectional traversal category.)
+
+namespace {
+
+/// The concept checks Boost's and CGAL's graph algorithms rely on, for G.
+template <class G>
+struct Generic_graph_checks {
+  using V = typename boost::graph_traits<G>::vertex_descriptor;
+  using H = typename boost::graph_traits<G>::halfedge_descriptor;
+  using E = typename boost::graph_traits<G>::edge_descriptor;
+  using F = typename boost::graph_traits<G>::face_descriptor;
+  BOOST_CONCEPT_ASSERT((boost::VertexListGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((boost::EdgeListGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((boost::IncidenceGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((boost::BidirectionalGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((boost::AdjacencyGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((boost::ReadablePropertyGraphConcept<G, V, boost::vertex_index_t>));
+  BOOST_CONCEPT_ASSERT((boost::ReadablePropertyGraphConcept<G, E, boost::edge_index_t>));
+  BOOST_CONCEPT_ASSERT((boost::ReadablePropertyGraphConcept<G, H, CGAL::halfedge_index_t>));
+  BOOST_CONCEPT_ASSERT((boost::ReadablePropertyGraphConcept<G, F, CGAL::face_index_t>));
+  BOOST_CONCEPT_ASSERT((CGAL::HalfedgeGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((CGAL::HalfedgeListGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((CGAL::FaceGraphConcept<G>));
+  BOOST_CONCEPT_ASSERT((CGAL::FaceListGraphConcept<G>));
+  static_assert(std::is_convertible_v<typename boost::graph_traits<G>::traversal_category,
+                                      boost::bidirectional_graph_tag>);
+  static_assert(std::is_convertible_v<typename boost::graph_traits<G>::traversal_category,
+                                      boost::adjacency_graph_tag>);
+};
+static_assert(sizeof(Generic_graph_checks<Hmesh>) > 0);
+static_assert(sizeof(Generic_graph_checks<genmesh::Halfedge_mesh<>>) > 0);
+static_assert(sizeof(Generic_graph_checks<genmesh::Incidence_mesh<>>) > 0);
+static_assert(sizeof(Generic_graph_checks<genmesh::Incidence_mesh<Point>>) > 0);
+static_assert(sizeof(Generic_graph_checks<Surface_mesh>) > 0);
+
+/// Two components: a grid with a hole (border, valences 2 to 6) and a
+/// tetrahedron beside it.
+genmesh::Polygon_soup two_component_soup() {
+  genmesh::Polygon_soup s = genmesh::make_grid_with_hole(6);
+  const genmesh::Polygon_soup t = genmesh::make_tetrahedron();
+  const auto base = static_cast<genmesh::Polygon_soup::Index>(s.num_points());
+  for (const auto& p : t.points) s.add_point(p.x() + 10, p.y(), p.z());
+  for (std::size_t f = 0; f < t.num_faces(); ++f) {
+    std::vector<genmesh::Polygon_soup::Index> c;
+    for (auto i : t.face(f)) c.push_back(i + base);
+    s.add_face(c);
+  }
+  return s;
+}
+
+/// What generic graph code computes on g, per vertex in index order: its
+/// component (boost::connected_components), hop distance from vertex 0
+/// (boost::breadth_first_search), edge-length distance from vertex 0
+/// (boost::dijkstra_shortest_paths), sorted neighbours through out_edges,
+/// in_edges and adjacent_vertices, and the degrees.
+struct Graph_walk {
+  std::vector<int> component;
+  std::vector<std::size_t> hops;
+  std::vector<double> distance;
+  std::vector<std::vector<std::size_t>> out_neighbours, in_neighbours, adjacent;
+  std::vector<std::size_t> out_degree, in_degree;
+};
+
+template <class G>
+Graph_walk walk_graph(const G& g) {
+  using V = typename boost::graph_traits<G>::vertex_descriptor;
+  using E = typename boost::graph_traits<G>::edge_descriptor;
+  const auto vindex = get(boost::vertex_index, g);
+  const std::size_t n = num_vertices(g);
+  Graph_walk w;
+  w.component.assign(n, -1);
+  const auto component = boost::make_iterator_property_map(w.component.begin(), vindex);
+  boost::connected_components(g, component, boost::vertex_index_map(vindex));
+
+  const V start = *vertices(g).begin();
+  w.hops.assign(n, 0);
+  const auto hops = boost::make_iterator_property_map(w.hops.begin(), vindex);
+  boost::breadth_first_search(
+      g, start,
+      boost::visitor(boost::make_bfs_visitor(boost::record_distances(hops, boost::on_tree_edge())))
+          .vertex_index_map(vindex));
+
+  w.distance.assign(n, 0.0);
+  const auto length = boost::make_function_property_map<E, double>([&g](E e) {
+    return (genmesh::to_eigen(get(get(genmesh::vertex_point, g), source(e, g))) -
+            genmesh::to_eigen(get(get(genmesh::vertex_point, g), target(e, g))))
+        .norm();
+  });
+  std::vector<V> pred(n);
+  boost::dijkstra_shortest_paths(
+      g, start,
+      boost::weight_map(length)
+          .vertex_index_map(vindex)
+          .predecessor_map(boost::make_iterator_property_map(pred.begin(), vindex))
+          .distance_map(boost::make_iterator_property_map(w.distance.begin(), vindex)));
+
+  for (V v : vertices(g)) {
+    std::vector<std::size_t> out, in, adj;
+    for (E e : boost::make_iterator_range(out_edges(v, g))) {
+      EXPECT_EQ(source(e, g), v);
+      out.push_back(get(boost::vertex_index, g, target(e, g)));
+    }
+    for (E e : boost::make_iterator_range(in_edges(v, g))) {
+      EXPECT_EQ(target(e, g), v);
+      in.push_back(get(boost::vertex_index, g, source(e, g)));
+    }
+    for (V u : boost::make_iterator_range(adjacent_vertices(v, g))) adj.push_back(get(vindex, u));
+    std::sort(out.begin(), out.end());
+    std::sort(in.begin(), in.end());
+    std::sort(adj.begin(), adj.end());
+    w.out_neighbours.push_back(out);
+    w.in_neighbours.push_back(in);
+    w.adjacent.push_back(adj);
+    w.out_degree.push_back(out_degree(v, g));
+    w.in_degree.push_back(in_degree(v, g));
+  }
+  return w;
+}
+
+template <class T>
+class Generic_graph_code : public ::testing::Test {};
+TYPED_TEST_SUITE(Generic_graph_code, genmesh_test::Backends);
+
+TYPED_TEST(Generic_graph_code, BoostSearchesOverOutEdgesAgreeWithHalfedgeMesh) {
+  const genmesh::Polygon_soup soup = two_component_soup();
+  TypeParam g;
+  genmesh::build_mesh(soup, g);
+  genmesh::Halfedge_mesh<> reference;
+  genmesh::build_mesh(soup, reference);
+
+  const Graph_walk w = walk_graph(g), r = walk_graph(reference);
+  ASSERT_EQ(w.component.size(), soup.num_points());
+  EXPECT_EQ(*std::max_element(w.component.begin(), w.component.end()), 1);
+  EXPECT_EQ(w.component, r.component);
+  EXPECT_EQ(w.hops, r.hops);
+  ASSERT_EQ(w.distance.size(), r.distance.size());
+  for (std::size_t i = 0; i < w.distance.size(); ++i) EXPECT_NEAR(w.distance[i], r.distance[i], 1e-12) << i;
+  EXPECT_EQ(w.out_neighbours, r.out_neighbours);
+  EXPECT_EQ(w.in_neighbours, w.out_neighbours); // undirected: the same neighbours both ways
+  EXPECT_EQ(w.adjacent, w.out_neighbours);
+  EXPECT_EQ(w.out_degree, r.out_degree);
+  EXPECT_EQ(w.in_degree, r.in_degree);
+  // The tetrahedron is unreachable from vertex 0: BFS leaves it at 0 hops,
+  // Dijkstra at infinity.
+  EXPECT_EQ(w.hops.back(), 0u);
+  EXPECT_GT(w.distance.back(), 1e300);
+  std::size_t degree_sum = 0;
+  for (auto d : w.out_degree) degree_sum += d;
+  EXPECT_EQ(degree_sum, 2 * static_cast<std::size_t>(num_edges(g)));
+}
+
+} // namespace
+
+// ---- every subdivision scheme on Polyhedron_3 and OpenMesh -----------------
+// (issue 10, point 9: same canonical soups as Halfedge_mesh, through the
+// public subdivision API and each mesh's own index maps.)
+
+namespace {
+
+struct Om_double_traits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+using Om_poly_d = OpenMesh::PolyMesh_ArrayKernelT<Om_double_traits>;
+using Om_tri_d = OpenMesh::TriMesh_ArrayKernelT<Om_double_traits>;
+
+enum class Scheme { loop, catmull_clark, midpoint, sqrt3, doo_sabin, butterfly };
+constexpr Scheme all_schemes[] = {Scheme::loop, Scheme::catmull_clark, Scheme::midpoint,
+                                  Scheme::sqrt3, Scheme::doo_sabin, Scheme::butterfly};
+const char* scheme_name(Scheme s) {
+  const char* n[] = {"loop", "catmull_clark", "midpoint", "sqrt3", "doo_sabin", "butterfly"};
+  return n[static_cast<int>(s)];
+}
+bool triangles_only(Scheme s) { return s == Scheme::loop || s == Scheme::sqrt3 || s == Scheme::butterfly; }
+
+template <class G>
+void subdivide(Scheme s, G& g, int levels) {
+  switch (s) {
+  case Scheme::loop: genmesh::loop_subdivision(g, {.iterations = levels}); return;
+  case Scheme::catmull_clark: genmesh::catmull_clark_subdivision(g, {.iterations = levels}); return;
+  case Scheme::midpoint: genmesh::midpoint_subdivision(g, {.iterations = levels}); return;
+  case Scheme::sqrt3: genmesh::sqrt3_subdivision(g, {.iterations = levels}); return;
+  case Scheme::doo_sabin: genmesh::doo_sabin_subdivision(g, {.iterations = levels}); return;
+  case Scheme::butterfly: genmesh::butterfly_subdivision(g, {.iterations = levels}); return;
+  }
+}
+
+template <class G>
+Canonical_soup subdivided(const genmesh::Polygon_soup& soup, Scheme s, int levels) {
+  G g;
+  genmesh::build_mesh(soup, g);
+  subdivide(s, g, levels);
+  return canonical_soup(g);
+}
+
+struct Subdivision_input {
+  const char* name;
+  genmesh::Polygon_soup soup;
+};
+
+std::vector<Subdivision_input> subdivision_inputs() {
+  return {{"tetrahedron", genmesh::make_tetrahedron()},
+          {"cube", genmesh::make_cube()},
+          {"icosphere", genmesh::make_icosphere(1)},
+          {"torus_triangles", genmesh::make_torus(8, 6, true)},
+          {"grid_with_hole", genmesh::make_grid_with_hole(6)}};
+}
+
+bool all_triangles(const genmesh::Polygon_soup& s) {
+  for (std::size_t f = 0; f < s.num_faces(); ++f)
+    if (s.face_size(f) != 3) return false;
+  return true;
+}
+
+TEST(CgalToGenmesh, EverySchemeOnPolyhedronAndOpenMeshEqualsHalfedgeMesh) {
+  for (const auto& in : subdivision_inputs()) {
+    for (Scheme s : all_schemes) {
+      if (triangles_only(s) && !all_triangles(in.soup)) continue;
+      SCOPED_TRACE(std::string(in.name) + " " + scheme_name(s));
+      const Canonical_soup expected = subdivided<genmesh::Halfedge_mesh<>>(in.soup, s, 2);
+      ASSERT_GT(expected.faces.size(), in.soup.num_faces());
+      EXPECT_EQ(subdivided<Polyhedron_with_ids>(in.soup, s, 2), expected);
+      EXPECT_EQ(subdivided<Om_poly_d>(in.soup, s, 2), expected);
+      if (all_triangles(in.soup) && triangles_only(s)) {
+        EXPECT_EQ(subdivided<Om_tri_d>(in.soup, s, 2), expected);
+      }
+    }
+  }
 }
 
 } // namespace

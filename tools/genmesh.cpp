@@ -216,45 +216,48 @@ auto with_backend(const std::string& backend, F&& f) {
   return f(m);
 }
 
+// Prints why the soup cannot become a halfedge mesh (exit_invalid).
+int report_refused_soup(const Args& a, const genmesh::Polygon_soup& soup, const genmesh::Soup_report& soup_report,
+                        double seconds) {
+  const std::string& file = a.files[0];
+  if (a.json) {
+    std::cout << "{\"command\":\"" << a.command << "\",\"file\":\"" << json_escape(file)
+              << "\",\"backend\":\"" << a.backend << "\",\"valid\":false,\"manifold\":false"
+              << ",\"problems\":\"" << json_escape(genmesh::to_string(soup_report))
+              << "\",\"seconds\":" << seconds << "}\n";
+  } else {
+    std::cout << file << ": not a valid oriented 2-manifold polygon mesh\n" << genmesh::to_string(soup_report);
+    if (a.backend == "incidence") {
+      // The incidence mesh holds what a halfedge mesh cannot: load the soup
+      // as it is and name the fins, misoriented edges and bow-ties.
+      Incidence_mesh m;
+      m.load_soup(soup);
+      std::cout << "incidence mesh (" << m.n_vertices() << " vertices, " << m.n_edges() << " edges, "
+                << m.n_faces() << " faces): " << genmesh::to_string(m.manifold_report());
+    }
+    std::cout << "(run with --repair to fix what can be fixed)\n";
+  }
+  return exit_invalid;
+}
+
 int cmd_info_or_check(const Args& a) {
   const std::string& file = a.files[0];
   genmesh::Polygon_soup soup = genmesh::read_soup(file);
 
-  // The soup is checked first: a halfedge mesh cannot hold what a bad soup says.
+  // The soup is checked first (inside build_mesh, on the edge table the
+  // build uses): a halfedge mesh cannot hold what a bad soup says.
   const auto t0 = std::chrono::steady_clock::now();
-  genmesh::Soup_report soup_report = genmesh::check_soup(soup);
-  if (!soup_report.ok() && !a.repair) {
-    const double seconds = seconds_since(t0);
-    if (a.json) {
-      std::cout << "{\"command\":\"" << a.command << "\",\"file\":\"" << json_escape(file)
-                << "\",\"backend\":\"" << a.backend << "\",\"valid\":false,\"manifold\":false"
-                << ",\"problems\":\"" << json_escape(genmesh::to_string(soup_report))
-                << "\",\"seconds\":" << seconds << "}\n";
-    } else {
-      std::cout << file << ": not a valid oriented 2-manifold polygon mesh\n"
-                << genmesh::to_string(soup_report);
-      if (a.backend == "incidence") {
-        // The incidence mesh holds what a halfedge mesh cannot: load the soup
-        // as it is and name the fins, misoriented edges and bow-ties.
-        Incidence_mesh m;
-        m.load_soup(soup);
-        std::cout << "incidence mesh (" << m.n_vertices() << " vertices, " << m.n_edges()
-                  << " edges, " << m.n_faces() << " faces): " << genmesh::to_string(m.manifold_report());
-      }
-      std::cout << "(run with --repair to fix what can be fixed)\n";
-    }
-    return exit_invalid;
-  }
-
   return with_backend(a.backend, [&](auto& mesh) {
     genmesh::Build_report build;
     try {
-      build = genmesh::build_mesh(soup, mesh, {.repair = a.repair});
+      build = genmesh::build_mesh(soup, mesh, {.repair = a.repair, .throw_on_refusal = false});
     } catch (const genmesh::invalid_input& e) {
       // Repair was asked for and could not make a valid mesh: the input is invalid.
       std::cout << file << ": " << e.what() << "\n";
       return exit_invalid;
     }
+    if (!build.built) return report_refused_soup(a, soup, build.soup, seconds_since(t0));
+    soup = genmesh::Polygon_soup{}; // the mesh holds it all now
     genmesh::Mesh_report report = genmesh::check_mesh(mesh);
     const double seconds = seconds_since(t0);
     if (a.json) {
@@ -275,6 +278,7 @@ int cmd_convert(const Args& a) {
   const auto t0 = std::chrono::steady_clock::now();
   return with_backend(a.backend, [&](auto& mesh) {
     genmesh::Build_report build = genmesh::build_mesh(soup, mesh, {.repair = a.repair});
+    soup = genmesh::Polygon_soup{}; // the mesh holds it all now
     genmesh::Mesh_report report = genmesh::check_mesh(mesh);
     const double seconds = seconds_since(t0);
     if (!report.ok()) {
@@ -377,6 +381,7 @@ int cmd_subdivide(const Args& a) {
   progress.show = !a.json && isatty(STDERR_FILENO);
   return with_backend(a.backend, [&](auto& mesh) {
     genmesh::build_mesh(soup, mesh, {.repair = a.repair});
+    soup = genmesh::Polygon_soup{}; // the mesh holds it all now
     genmesh::Subdivision_result result;
     double seconds = 0;
     if (creases.empty()) {

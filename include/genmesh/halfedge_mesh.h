@@ -1029,6 +1029,10 @@ public:
   [[nodiscard]] Range<Face_around_target_iterator> faces_around_target(Vertex_index v) const {
     return faces_around_target(halfedge(v));
   }
+  /// The sources of the halfedges around v (Boost adjacent_vertices).
+  [[nodiscard]] Range<Vertex_around_target_iterator> adjacent_vertices(Vertex_index v) const {
+    return vertices_around_target(v);
+  }
   /// The edges targeting v, each oriented towards v (Boost in_edges).
   [[nodiscard]] Range<In_edge_iterator> in_edges(Vertex_index v) const {
     return {{this, halfedge(v), 0}, {this, halfedge(v), 1}};
@@ -1216,14 +1220,6 @@ namespace boost {
 
 template <class P>
 struct graph_traits<genmesh::Halfedge_mesh<P>> : genmesh::detail::Mesh_graph_traits<P> {
-private:
-  struct Traversal_category : public virtual boost::bidirectional_graph_tag,
-                              public virtual boost::vertex_list_graph_tag,
-                              public virtual boost::edge_list_graph_tag,
-                              public virtual boost::adjacency_graph_tag {};
-
-public:
-  using traversal_category = Traversal_category;
   using in_edge_iterator = genmesh::In_edge_iterator;
   using out_edge_iterator = genmesh::Out_edge_iterator;
   using adjacency_iterator = genmesh::Vertex_around_target_iterator;
@@ -1246,30 +1242,6 @@ inline constexpr bool is_genmesh_mesh<Halfedge_mesh> = true;
 } // namespace detail
 
 // What only Halfedge_mesh has; the rest: <genmesh/detail/mesh_functions.h>.
-
-/// Edges leaving v, oriented so that source(e, m) == v (CGAL's order).
-template <class P>
-Range<Out_edge_iterator> out_edges(Vertex_index v, const Halfedge_mesh<P>& m) {
-  return m.out_edges(v);
-}
-/// Edges entering v, oriented so that target(e, m) == v.
-template <class P>
-Range<In_edge_iterator> in_edges(Vertex_index v, const Halfedge_mesh<P>& m) {
-  return m.in_edges(v);
-}
-/// The neighbours of v (sources of the halfedges around v).
-template <class P>
-Range<Vertex_around_target_iterator> adjacent_vertices(Vertex_index v, const Halfedge_mesh<P>& m) {
-  return m.vertices_around_target(v);
-}
-template <class P>
-std::size_t out_degree(Vertex_index v, const Halfedge_mesh<P>& m) {
-  return m.degree(v);
-}
-template <class P>
-std::size_t in_degree(Vertex_index v, const Halfedge_mesh<P>& m) {
-  return m.degree(v);
-}
 
 // MutableHalfedgeGraph
 template <class P>

@@ -467,6 +467,59 @@ private:
 
 } // namespace detail
 
+namespace detail {
+
+/// What an Incidence_vertex_row_iterator yields for each edge of a vertex.
+enum class Row_walk { out_edges, in_edges, adjacent_vertices };
+
+/// Walks the edges of a vertex v in its d0ᵀ row (row order, which is not
+/// rotation order) and yields each as Boost wants it: the edge oriented
+/// away from v (out_edges), towards v (in_edges), or its other end
+/// (adjacent_vertices). Needs no halfedge walk, so it works on non-manifold
+/// vertices too. Invalidated by any edit of the mesh.
+template <class Mesh, Row_walk W>
+class Incidence_vertex_row_iterator {
+public:
+  using value_type = std::conditional_t<W == Row_walk::adjacent_vertices, Vertex_index, Edge_index>;
+  using reference = value_type;
+  using pointer = void;
+  using difference_type = std::ptrdiff_t;
+  using iterator_category = std::forward_iterator_tag;
+  using iterator_concept = std::forward_iterator_tag;
+
+  Incidence_vertex_row_iterator() = default;
+  Incidence_vertex_row_iterator(const Mesh* m, const int* col, const signed char* sign)
+      : m_(m), col_(col), sign_(sign) {}
+
+  value_type operator*() const {
+    // d0ᵀ holds +1 where v is the edge's target: side 0 then enters v.
+    const Halfedge_index in(2u * static_cast<std::uint32_t>(*col_) + (*sign_ > 0 ? 0u : 1u));
+    if constexpr (W == Row_walk::in_edges) return Edge_index(in);
+    else if constexpr (W == Row_walk::out_edges) return Edge_index(Halfedge_index(in.idx() ^ 1u));
+    else return m_->source(in);
+  }
+  Incidence_vertex_row_iterator& operator++() {
+    ++col_;
+    ++sign_;
+    return *this;
+  }
+  Incidence_vertex_row_iterator operator++(int) {
+    Incidence_vertex_row_iterator t = *this;
+    ++*this;
+    return t;
+  }
+  friend bool operator==(const Incidence_vertex_row_iterator& a, const Incidence_vertex_row_iterator& b) {
+    return a.col_ == b.col_;
+  }
+
+private:
+  const Mesh* m_ = nullptr;
+  const int* col_ = nullptr;
+  const signed char* sign_ = nullptr;
+};
+
+} // namespace detail
+
 /// The vertex point map of an Incidence_mesh (a boost lvalue property map).
 template <class P>
 struct Incidence_point_map {
@@ -729,6 +782,20 @@ public:
       if (source(in) == u) return in;
     }
     return {};
+  }
+
+  using Out_edge_iterator = detail::Incidence_vertex_row_iterator<Incidence_mesh, detail::Row_walk::out_edges>;
+  using In_edge_iterator = detail::Incidence_vertex_row_iterator<Incidence_mesh, detail::Row_walk::in_edges>;
+  using Adjacent_vertex_iterator =
+      detail::Incidence_vertex_row_iterator<Incidence_mesh, detail::Row_walk::adjacent_vertices>;
+  /// The edges at v oriented away from v (Boost out_edges), in d0ᵀ row
+  /// order, not rotation order; also on a non-manifold vertex.
+  [[nodiscard]] Range<Out_edge_iterator> out_edges(Vertex_index v) const { return vertex_row_<Out_edge_iterator>(v); }
+  /// The edges at v oriented towards v (Boost in_edges), in d0ᵀ row order.
+  [[nodiscard]] Range<In_edge_iterator> in_edges(Vertex_index v) const { return vertex_row_<In_edge_iterator>(v); }
+  /// The other ends of v's edges (Boost adjacent_vertices), in d0ᵀ row order.
+  [[nodiscard]] Range<Adjacent_vertex_iterator> adjacent_vertices(Vertex_index v) const {
+    return vertex_row_<Adjacent_vertex_iterator>(v);
   }
 
   /// Number of edges at v (a d0ᵀ row length): O(1).
@@ -1449,6 +1516,14 @@ private:
   detail::Incidence_rows d1_{4};  // F × E, rows homed while faces have at most 4 sides
   detail::Incidence_rows d1t_{2}; // E × F, rows homed while manifold
   std::vector<bool> vremoved_, eremoved_, fremoved_;
+  template <class It>
+  Range<It> vertex_row_(Vertex_index v) const {
+    const int n = d0t_.size(v.idx());
+    const int* c = d0t_.cols(v.idx());
+    const signed char* sg = d0t_.vals(v.idx());
+    return {It(this, c, sg), It(this, c + n, sg + n), static_cast<std::size_t>(n)};
+  }
+
   std::vector<std::uint32_t> vfree_, efree_, ffree_; // LIFO free lists
   std::size_t removed_vertices_ = 0, removed_edges_ = 0, removed_faces_ = 0;
   bool garbage_ = false;
@@ -1476,12 +1551,9 @@ namespace boost {
 
 template <class P>
 struct graph_traits<genmesh::Incidence_mesh<P>> : genmesh::detail::Mesh_graph_traits<P> {
-private:
-  struct Traversal_category : public virtual boost::vertex_list_graph_tag,
-                              public virtual boost::edge_list_graph_tag {};
-
-public:
-  using traversal_category = Traversal_category;
+  using in_edge_iterator = typename genmesh::Incidence_mesh<P>::In_edge_iterator;
+  using out_edge_iterator = typename genmesh::Incidence_mesh<P>::Out_edge_iterator;
+  using adjacency_iterator = typename genmesh::Incidence_mesh<P>::Adjacent_vertex_iterator;
 };
 
 template <class P>

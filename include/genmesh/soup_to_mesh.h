@@ -58,6 +58,9 @@ struct Build_options {
   /// and nothing is repaired.
   bool check = true;
   Soup_repair_options repair_options = {}; ///< what the repair may change
+  /// Off: a soup build_mesh() refuses gives a report with built == false
+  /// (and soup saying why) and leaves g empty, instead of throwing.
+  bool throw_on_refusal = true;
 };
 
 /// What build_mesh() did.
@@ -67,6 +70,8 @@ struct Build_report {
   std::size_t vertices = 0, edges = 0, faces = 0;
   std::size_t border_halfedges = 0;
   std::size_t zero_area_faces = 0; ///< warnings from check_soup() (built anyway)
+  Soup_report soup;  ///< check_soup() of the input (empty with .check off)
+  bool built = true; ///< false only when refused with .throw_on_refusal off
 };
 
 namespace detail {
@@ -194,14 +199,24 @@ Build_report build_mesh(const Polygon_soup& soup, G& g, const Build_options& opt
     throw invalid_input("build_mesh: the target mesh is not empty (" + std::to_string(num_vertices(g)) +
                         " vertices, " + std::to_string(num_faces(g)) + " faces)");
 
+  // One edge table serves the check and the pairing of corners, and is
+  // freed before the mesh is allocated.
   Build_report report;
   Polygon_soup repaired;
   const Polygon_soup* in = &soup;
+  Soup_edges e = soup_edges(soup);
   if (options.check) {
-    Soup_report r = check_soup(soup);
-    report.zero_area_faces = r.zero_area_faces;
-    if (!r.ok()) {
-      if (!options.repair) throw invalid_input(refusal(r));
+    report.soup = check_soup(soup, e);
+    report.zero_area_faces = report.soup.zero_area_faces;
+    if (!report.soup.ok()) {
+      if (!options.repair) {
+        if (!options.throw_on_refusal) {
+          report.built = false;
+          return report;
+        }
+        throw invalid_input(refusal(report.soup));
+      }
+      e = Soup_edges{};
       repaired = soup;
       report.repair = repair_soup(repaired, options.repair_options);
       report.repaired = true;
@@ -209,6 +224,7 @@ Build_report build_mesh(const Polygon_soup& soup, G& g, const Build_options& opt
         throw invalid_input("build_mesh: the repair could not fix the polygon soup:\n" + to_string(report.repair));
       report.zero_area_faces = report.repair.after.zero_area_faces;
       in = &repaired;
+      e = soup_edges(repaired);
     }
   }
   const Polygon_soup& s = *in;
@@ -217,7 +233,6 @@ Build_report build_mesh(const Polygon_soup& soup, G& g, const Build_options& opt
   // Pair every corner (directed edge corner → next corner) with its twin.
   // Soup_edges groups them by undirected edge; on a checked soup a group has
   // one or two members.
-  Soup_edges e = soup_edges(s);
   std::vector<std::uint32_t> twin(nc, k_null);
   std::size_t ne = 0;
   for (std::size_t gi = 0; gi + 1 < e.group_begin.size(); ++gi) {
@@ -231,13 +246,15 @@ Build_report build_mesh(const Polygon_soup& soup, G& g, const Build_options& opt
       throw invalid_input(refusal(check_soup(s)));
     }
   }
+  std::vector<char> usable = std::move(e.usable);
+  e = Soup_edges{};
 
   // The border halfedge into vertex v continues with the border halfedge out
   // of v; the one out of v is the twin of the border corner ending at v
   // (unique unless several border gaps meet at v: a bow-tie).
   std::vector<std::uint32_t> border_out(np, k_null); // border corner whose twin leaves v
   for (std::size_t f = 0; f < nf; ++f) {
-    if (!e.usable[f]) throw invalid_input(refusal(check_soup(s)));
+    if (!usable[f]) throw invalid_input(refusal(check_soup(s)));
     for (std::uint32_t c = s.offsets[f]; c < s.offsets[f + 1]; ++c) {
       if (twin[c] != k_null) continue;
       std::uint32_t v = s.indices[next_corner(s, static_cast<std::uint32_t>(f), c)];
@@ -245,6 +262,8 @@ Build_report build_mesh(const Polygon_soup& soup, G& g, const Build_options& opt
       border_out[v] = c;
     }
   }
+
+  usable = {};
 
   // Nothing below throws (but for allocation): g is built whole or not at all.
   report.border_halfedges = link_soup(s, twin, border_out, ne, g);
@@ -275,8 +294,12 @@ Polygon_soup to_soup(const G& g) {
     bound = index_bound(vertex_index, g);
     number.assign(bound, detail::k_null);
   }
+  const auto index_map = [&] {
+    if constexpr (HasIndexMap<G, vertex_index_t>) return get(vertex_index, g);
+    else return 0;
+  }();
   auto vindex = [&](V v) -> std::size_t {
-    if constexpr (HasIndexMap<G, vertex_index_t>) return static_cast<std::size_t>(get(get(vertex_index, g), v));
+    if constexpr (HasIndexMap<G, vertex_index_t>) return static_cast<std::size_t>(get(index_map, v));
     else return 0;
   };
   for (V v : vertices(g)) {

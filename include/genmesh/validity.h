@@ -191,6 +191,11 @@ public:
   }
 
   std::size_t bound() const noexcept { return bound_; }
+  /// Whether dense number i (< bound()) is a live element's.
+  bool is_live(std::size_t i) const {
+    if constexpr (indexed) return alive_[i] != 0;
+    else return i < bound_;
+  }
 
   std::uint32_t operator()(D d) const {
     if (d == null_) return k_null;
@@ -252,238 +257,368 @@ struct Union_find {
 
 } // namespace detail
 
-/// Checks every halfedge invariant of g and counts its elements, boundary
-/// loops and components. Never throws on a corrupt mesh and never loops:
-/// every walk is bounded. Runs in time linear in the index bounds.
+namespace detail::mesh_check {
+
+/// What every pass of check_mesh() reads: the graph, the report, and dense
+/// numbers of its live elements. The passes follow the graph's own links by
+/// descriptor (checking each link is live before following it), so the
+/// check holds no copy of the links: per halfedge it keeps one byte
+/// (next-count) and one word (which face cycle or vertex fan claimed it).
 template <class G>
-  requires FaceListGraph<G> && HalfedgeListGraph<G> && VertexListGraph<G> && EdgeListGraph<G>
-Mesh_report check_mesh(const G& g) {
-  using namespace detail;
+struct Context {
   using Traits = boost::graph_traits<G>;
   using V = vertex_descriptor_t<G>;
   using H = halfedge_descriptor_t<G>;
   using F = face_descriptor_t<G>;
 
-  Mesh_report r;
-  Problem_sink problem(r);
+  const G& g;
+  Mesh_report& r;
+  Problem_sink problem;
+  Dense_index<G, vertex_index_t, V> vi;
+  Dense_index<G, halfedge_index_t, H> hi;
+  Dense_index<G, face_index_t, F> fi;
 
-  Dense_index<G, vertex_index_t, V> vi(g, vertices(g), Traits::null_vertex());
-  Dense_index<G, halfedge_index_t, H> hi(g, halfedges(g), Traits::null_halfedge());
-  Dense_index<G, face_index_t, F> fi(g, faces(g), Traits::null_face());
-  const std::size_t nh_bound = hi.bound(), nv_bound = vi.bound(), nf_bound = fi.bound();
+  Context(const G& graph, Mesh_report& report)
+      : g(graph), r(report), problem(report), vi(graph, vertices(graph), Traits::null_vertex()),
+        hi(graph, halfedges(graph), Traits::null_halfedge()), fi(graph, faces(graph), Traits::null_face()) {}
+};
 
-  // Links of every live halfedge, as dense numbers (k_null / k_bad when broken).
-  std::vector<std::uint32_t> nxt(nh_bound, k_bad), prv(nh_bound, k_bad), opp(nh_bound, k_bad),
-      tgt(nh_bound, k_bad), fac(nh_bound, k_bad);
-  std::vector<char> live_h(nh_bound, 0);
-  std::vector<std::uint32_t> order; // live halfedges in index order
-  for (H h : halfedges(g)) {
-    std::uint32_t i = hi(h);
+/// Pass 1: the links of every live halfedge — references live, opposite an
+/// involution on distinct edges, next/prev inverse, source(next(h)) ==
+/// target(h), face(next(h)) == face(h), one face per side — and how many
+/// halfedges name each as next (saturating at 255).
+template <class G>
+void check_halfedge_links(Context<G>& c, std::vector<std::uint8_t>& pred_count) {
+  const G& g = c.g;
+  auto& problem = c.problem;
+  for (auto h : halfedges(g)) {
+    const std::uint32_t i = c.hi(h);
     if (!is_ref(i)) continue;
-    live_h[i] = 1;
-    ++r.halfedges;
-    nxt[i] = hi(next(h, g));
-    prv[i] = hi(prev(h, g));
-    H o = opposite(h, g);
-    opp[i] = hi(o);
-    tgt[i] = vi(target(h, g));
-    fac[i] = fi(face(h, g));
-    if (fac[i] == k_null) ++r.border_halfedges;
-    if (is_ref(opp[i]) && !(edge(h, g) == edge(o, g)))
-      problem(Mesh_problem_kind::opposite, "halfedge", i,
-              "edge(h) differs from edge(opposite(h)) (opposite is halfedge " + std::to_string(opp[i]) + ")");
-  }
-  for (std::size_t i = 0; i < nh_bound; ++i)
-    if (live_h[i]) order.push_back(static_cast<std::uint32_t>(i));
-
-  // Halfedge invariants.
-  std::vector<std::uint32_t> pred_count(nh_bound, 0);
-  for (std::uint32_t i : order) {
-    const std::uint32_t n = nxt[i], p = prv[i], o = opp[i], t = tgt[i], f = fac[i];
+    ++c.r.halfedges;
+    const auto nd = next(h, g), pd = prev(h, g), od = opposite(h, g);
+    const std::uint32_t n = c.hi(nd), p = c.hi(pd), o = c.hi(od), t = c.vi(target(h, g)), f = c.fi(face(h, g));
+    if (f == k_null) ++c.r.border_halfedges;
     if (!is_ref(n)) problem(Mesh_problem_kind::invalid_reference, "halfedge", i, "next is " + ref_name("halfedge", n));
     if (!is_ref(p)) problem(Mesh_problem_kind::invalid_reference, "halfedge", i, "prev is " + ref_name("halfedge", p));
     if (!is_ref(o)) problem(Mesh_problem_kind::invalid_reference, "halfedge", i, "opposite is " + ref_name("halfedge", o));
     if (!is_ref(t)) problem(Mesh_problem_kind::invalid_reference, "halfedge", i, "target is " + ref_name("vertex", t));
     if (f == k_bad) problem(Mesh_problem_kind::invalid_reference, "halfedge", i, "face is a face that is not live");
-    if (is_ref(n)) ++pred_count[n];
+    if (is_ref(n) && pred_count[n] != 255) ++pred_count[n];
     if (is_ref(o)) {
-      if (o == i) problem(Mesh_problem_kind::opposite, "halfedge", i, "opposite(h) == h");
-      else if (opp[o] != i)
+      if (!(edge(h, g) == edge(od, g)))
         problem(Mesh_problem_kind::opposite, "halfedge", i,
-                "opposite(opposite(h)) is " + ref_name("halfedge", opp[o]) + ", not h (opposite is halfedge " +
+                "edge(h) differs from edge(opposite(h)) (opposite is halfedge " + std::to_string(o) + ")");
+      const std::uint32_t oo = c.hi(opposite(od, g)), ot = c.vi(target(od, g)), of = c.fi(face(od, g));
+      if (o == i) problem(Mesh_problem_kind::opposite, "halfedge", i, "opposite(h) == h");
+      else if (oo != i)
+        problem(Mesh_problem_kind::opposite, "halfedge", i,
+                "opposite(opposite(h)) is " + ref_name("halfedge", oo) + ", not h (opposite is halfedge " +
                     std::to_string(o) + ")");
-      if (is_ref(t) && tgt[o] == t)
+      if (is_ref(t) && ot == t)
         problem(Mesh_problem_kind::self_loop, "halfedge", i, "source and target are both vertex " + std::to_string(t));
-      if (o != i && f == k_null && fac[o] == k_null)
+      if (o != i && f == k_null && of == k_null)
         problem(Mesh_problem_kind::edge_faces, "halfedge", i,
                 "both sides of its edge are border (edge without a face, opposite is halfedge " + std::to_string(o) + ")");
-      else if (o != i && is_ref(f) && fac[o] == f && i < o)
+      else if (o != i && is_ref(f) && of == f && i < o)
         problem(Mesh_problem_kind::edge_faces, "halfedge", i,
                 "face " + std::to_string(f) + " lies on both sides of its edge");
     }
     if (is_ref(n)) {
       if (n == i) problem(Mesh_problem_kind::self_loop, "halfedge", i, "next(h) == h");
-      if (prv[n] != i)
+      const std::uint32_t np = c.hi(prev(nd, g)), nf = c.fi(face(nd, g));
+      if (np != i)
         problem(Mesh_problem_kind::next_prev, "halfedge", i,
-                "prev(next(h)) is " + ref_name("halfedge", prv[n]) + ", not h (next is halfedge " +
-                    std::to_string(n) + ")");
-      if (is_ref(opp[n]) && is_ref(t) && tgt[opp[n]] != t)
-        problem(Mesh_problem_kind::next_source, "halfedge", i,
-                "target is vertex " + std::to_string(t) + " but source(next(h)) is " + ref_name("vertex", tgt[opp[n]]) +
-                    " (next is halfedge " + std::to_string(n) + ")");
-      if (fac[n] != f && f != k_bad && fac[n] != k_bad)
+                "prev(next(h)) is " + ref_name("halfedge", np) + ", not h (next is halfedge " + std::to_string(n) + ")");
+      const auto nod = opposite(nd, g);
+      if (is_ref(c.hi(nod)) && is_ref(t)) {
+        const std::uint32_t ns = c.vi(target(nod, g));
+        if (ns != t)
+          problem(Mesh_problem_kind::next_source, "halfedge", i,
+                  "target is vertex " + std::to_string(t) + " but source(next(h)) is " + ref_name("vertex", ns) +
+                      " (next is halfedge " + std::to_string(n) + ")");
+      }
+      if (nf != f && f != k_bad && nf != k_bad)
         problem(Mesh_problem_kind::next_face, "halfedge", i,
-                "face is " + ref_name("face", f) + " but face(next(h)) is " + ref_name("face", fac[n]) +
+                "face is " + ref_name("face", f) + " but face(next(h)) is " + ref_name("face", nf) +
                     " (next is halfedge " + std::to_string(n) + ")");
     }
-    if (is_ref(p) && nxt[p] != i)
-      problem(Mesh_problem_kind::next_prev, "halfedge", i,
-              "next(prev(h)) is " + ref_name("halfedge", nxt[p]) + ", not h (prev is halfedge " + std::to_string(p) + ")");
+    if (is_ref(p)) {
+      const std::uint32_t pn = c.hi(next(pd, g));
+      if (pn != i)
+        problem(Mesh_problem_kind::next_prev, "halfedge", i,
+                "next(prev(h)) is " + ref_name("halfedge", pn) + ", not h (prev is halfedge " + std::to_string(p) + ")");
+    }
   }
-  for (std::uint32_t i : order)
-    if (pred_count[i] != 1)
-      problem(Mesh_problem_kind::next_not_unique, "halfedge", i,
-              "is next of " + std::to_string(pred_count[i]) + " halfedges, not exactly one");
+}
 
-  // Edges.
+/// Pass 2: every live halfedge is next of exactly one halfedge.
+template <class G>
+void check_next_unique(Context<G>& c, const std::vector<std::uint8_t>& pred_count) {
+  for (std::size_t i = 0; i < pred_count.size(); ++i)
+    if (c.hi.is_live(i) && pred_count[i] != 1)
+      c.problem(Mesh_problem_kind::next_not_unique, "halfedge", i,
+                "is next of " + std::string(pred_count[i] == 255 ? "255 or more" : std::to_string(pred_count[i])) +
+                    " halfedges, not exactly one");
+}
+
+/// Pass 3: halfedge(e) is a live halfedge of e; counts edges.
+template <class G>
+void check_edges(Context<G>& c) {
+  const G& g = c.g;
   Dense_index<G, edge_index_t, edge_descriptor_t<G>> ei(g, edges(g), edge_descriptor_t<G>{});
   for (auto e : edges(g)) {
-    ++r.edges;
-    H h = halfedge(e, g);
-    std::uint32_t i = hi(h);
+    ++c.r.edges;
+    const auto h = halfedge(e, g);
+    const std::uint32_t i = c.hi(h);
     if (!is_ref(i) || !(edge(h, g) == e))
-      problem(Mesh_problem_kind::edge_halfedge, "edge", ei(e),
-              "halfedge(e) is " + ref_name("halfedge", i) + (is_ref(i) ? ", whose edge is another" : ""));
+      c.problem(Mesh_problem_kind::edge_halfedge, "edge", ei(e),
+                "halfedge(e) is " + ref_name("halfedge", i) + (is_ref(i) ? ", whose edge is another" : ""));
   }
+}
 
-  // Faces: walk each cycle once; a halfedge seen by an earlier walk ends the walk.
-  std::vector<std::uint32_t> seen_by(nh_bound, k_null);
-  std::vector<char> live_f(nf_bound, 0);
-  std::vector<std::uint32_t> face_start(nf_bound, k_null);
-  for (F fd : faces(g)) {
-    std::uint32_t f = fi(fd);
+/// Pass 4: each face's cycle from halfedge(f) closes, has ≥ 3 halfedges and
+/// shares none with another cycle; seen_by[h] becomes the face whose walk
+/// passed h. Then every halfedge with a face lies on that face's cycle.
+template <class G>
+void check_face_cycles(Context<G>& c, std::vector<std::uint32_t>& seen_by) {
+  const G& g = c.g;
+  for (auto fd : faces(g)) {
+    const std::uint32_t f = c.fi(fd);
     if (!is_ref(f)) continue;
-    live_f[f] = 1;
-    ++r.faces;
-    std::uint32_t h = hi(halfedge(fd, g));
-    face_start[f] = h;
+    ++c.r.faces;
+    const auto hd = halfedge(fd, g);
+    const std::uint32_t h = c.hi(hd);
     if (!is_ref(h)) {
-      problem(Mesh_problem_kind::invalid_reference, "face", f, "halfedge(f) is " + ref_name("halfedge", h));
+      c.problem(Mesh_problem_kind::invalid_reference, "face", f, "halfedge(f) is " + ref_name("halfedge", h));
       continue;
     }
-    if (fac[h] != f) {
-      problem(Mesh_problem_kind::face_halfedge, "face", f,
-              "halfedge(f) is halfedge " + std::to_string(h) + " whose face is " + ref_name("face", fac[h]));
+    if (const std::uint32_t hf = c.fi(face(hd, g)); hf != f) {
+      c.problem(Mesh_problem_kind::face_halfedge, "face", f,
+                "halfedge(f) is halfedge " + std::to_string(h) + " whose face is " + ref_name("face", hf));
       continue;
     }
     std::size_t len = 0;
-    std::uint32_t c = h;
+    halfedge_descriptor_t<G> cd = hd;
+    std::uint32_t ci = h;
     bool closed = false;
     std::string why;
     while (true) {
-      if (seen_by[c] != k_null) {
-        why = seen_by[c] == f ? "returns to halfedge " + std::to_string(c) + " without passing halfedge(f)"
-                              : "runs into halfedge " + std::to_string(c) + " of face " + std::to_string(seen_by[c]) +
-                                    "'s cycle";
+      if (seen_by[ci] != k_null) {
+        why = seen_by[ci] == f ? "returns to halfedge " + std::to_string(ci) + " without passing halfedge(f)"
+                               : "runs into halfedge " + std::to_string(ci) + " of face " + std::to_string(seen_by[ci]) +
+                                     "'s cycle";
         break;
       }
-      seen_by[c] = f;
+      seen_by[ci] = f;
       ++len;
-      std::uint32_t n = nxt[c];
+      const auto nd = next(cd, g);
+      const std::uint32_t n = c.hi(nd);
       if (!is_ref(n)) {
-        why = "reaches halfedge " + std::to_string(c) + " whose next is " + ref_name("halfedge", n);
+        why = "reaches halfedge " + std::to_string(ci) + " whose next is " + ref_name("halfedge", n);
         break;
       }
       if (n == h) {
         closed = true;
         break;
       }
-      c = n;
+      cd = nd;
+      ci = n;
     }
-    if (!closed) problem(Mesh_problem_kind::face_cycle, "face", f, "the cycle from halfedge(f) " + why);
+    if (!closed) c.problem(Mesh_problem_kind::face_cycle, "face", f, "the cycle from halfedge(f) " + why);
     else if (len < 3)
-      problem(Mesh_problem_kind::face_cycle, "face", f, "its cycle has " + std::to_string(len) + " halfedges (< 3)");
-    if (len != 3) r.is_triangle_mesh = false;
-    if (len != 4) r.is_quad_mesh = false;
+      c.problem(Mesh_problem_kind::face_cycle, "face", f, "its cycle has " + std::to_string(len) + " halfedges (< 3)");
+    if (len != 3) c.r.is_triangle_mesh = false;
+    if (len != 4) c.r.is_quad_mesh = false;
   }
-  for (std::uint32_t i : order)
-    if (is_ref(fac[i]) && seen_by[i] != fac[i] && live_f[fac[i]])
-      problem(Mesh_problem_kind::face_cycle, "halfedge", i,
-              "has face " + std::to_string(fac[i]) + " but is not on that face's cycle");
+  for (auto hd : halfedges(g)) {
+    const std::uint32_t i = c.hi(hd);
+    if (!is_ref(i)) continue;
+    const std::uint32_t f = c.fi(face(hd, g));
+    if (is_ref(f) && seen_by[i] != f && c.fi.is_live(f))
+      c.problem(Mesh_problem_kind::face_cycle, "halfedge", i,
+                "has face " + std::to_string(f) + " but is not on that face's cycle");
+  }
+}
 
-  // Boundary loops: cycles of border halfedges, each walked once.
-  for (std::uint32_t i : order) {
-    if (fac[i] != k_null || seen_by[i] != k_null) continue;
-    ++r.boundary_loops;
-    std::uint32_t c = i;
-    while (is_ref(c) && seen_by[c] == k_null && fac[c] == k_null) {
-      seen_by[c] = k_bad; // marks "on a boundary walk"
-      c = nxt[c];
+/// Pass 5: cycles of border halfedges not yet walked, each counted once.
+template <class G>
+void count_boundary_loops(Context<G>& c, std::vector<std::uint32_t>& seen_by) {
+  const G& g = c.g;
+  for (auto hd : halfedges(g)) {
+    const std::uint32_t i = c.hi(hd);
+    if (!is_ref(i) || seen_by[i] != k_null || c.fi(face(hd, g)) != k_null) continue;
+    ++c.r.boundary_loops;
+    halfedge_descriptor_t<G> cd = hd;
+    std::uint32_t ci = i;
+    while (is_ref(ci) && seen_by[ci] == k_null && c.fi(face(cd, g)) == k_null) {
+      seen_by[ci] = k_bad; // marks "on a boundary walk"
+      cd = next(cd, g);
+      ci = c.hi(cd);
     }
   }
+}
 
-  // Vertices: halfedge(v) targets v, and one fan per vertex.
-  std::vector<std::uint32_t> in_count(nv_bound, 0);
-  for (std::uint32_t i : order)
-    if (is_ref(tgt[i])) ++in_count[tgt[i]];
-  std::vector<char> live_v(nv_bound, 0);
-  std::vector<std::uint32_t> fan_seen(nh_bound, k_null);
-  for (V vd : vertices(g)) {
-    std::uint32_t v = vi(vd);
+/// Pass 6: halfedge(v) targets v, and the halfedges ending at v form one fan
+/// (walked via opposite(next(h))) with at most one border gap. fan_seen is
+/// scratch (all k_null on entry).
+template <class G>
+void check_vertex_fans(Context<G>& c, std::vector<std::uint32_t>& fan_seen) {
+  const G& g = c.g;
+  std::vector<std::uint32_t> in_count(c.vi.bound(), 0);
+  for (auto hd : halfedges(g))
+    if (is_ref(c.hi(hd)))
+      if (const std::uint32_t t = c.vi(target(hd, g)); is_ref(t)) ++in_count[t];
+  for (auto vd : vertices(g)) {
+    const std::uint32_t v = c.vi(vd);
     if (!is_ref(v)) continue;
-    live_v[v] = 1;
-    ++r.vertices;
-    std::uint32_t h = hi(halfedge(vd, g));
+    ++c.r.vertices;
+    const auto hd = halfedge(vd, g);
+    const std::uint32_t h = c.hi(hd);
     if (h == k_null) {
-      if (in_count[v] == 0) ++r.isolated_vertices;
+      if (in_count[v] == 0) ++c.r.isolated_vertices;
       else
-        problem(Mesh_problem_kind::vertex_halfedge, "vertex", v,
-                "halfedge(v) is null but " + std::to_string(in_count[v]) + " halfedges end at it");
+        c.problem(Mesh_problem_kind::vertex_halfedge, "vertex", v,
+                  "halfedge(v) is null but " + std::to_string(in_count[v]) + " halfedges end at it");
       continue;
     }
     if (h == k_bad) {
-      problem(Mesh_problem_kind::invalid_reference, "vertex", v, "halfedge(v) is a halfedge that is not live");
+      c.problem(Mesh_problem_kind::invalid_reference, "vertex", v, "halfedge(v) is a halfedge that is not live");
       continue;
     }
-    if (tgt[h] != v) {
-      problem(Mesh_problem_kind::vertex_halfedge, "vertex", v,
-              "halfedge(v) is halfedge " + std::to_string(h) + " whose target is " + ref_name("vertex", tgt[h]));
+    if (const std::uint32_t t = c.vi(target(hd, g)); t != v) {
+      c.problem(Mesh_problem_kind::vertex_halfedge, "vertex", v,
+                "halfedge(v) is halfedge " + std::to_string(h) + " whose target is " + ref_name("vertex", t));
       continue;
     }
     std::size_t len = 0;
-    std::uint32_t c = h;
+    halfedge_descriptor_t<G> cd = hd;
+    std::uint32_t ci = h;
     bool closed = false, on_border = false;
     std::size_t border_in = 0; // border halfedges ending at v: one per gap in its fan
     while (len <= in_count[v]) {
-      if (!is_ref(c) || tgt[c] != v || fan_seen[c] != k_null) break;
-      fan_seen[c] = v;
-      on_border = on_border || fac[c] == k_null;
-      border_in += fac[c] == k_null ? 1 : 0;
+      if (!is_ref(ci) || c.vi(target(cd, g)) != v || fan_seen[ci] != k_null) break;
+      fan_seen[ci] = v;
+      const bool border = c.fi(face(cd, g)) == k_null;
+      on_border = on_border || border;
+      border_in += border ? 1 : 0;
       ++len;
-      std::uint32_t n = nxt[c];
-      if (!is_ref(n)) break;
-      c = opp[n];
-      if (c == h) {
+      const auto nd = next(cd, g);
+      if (!is_ref(c.hi(nd))) break;
+      cd = opposite(nd, g);
+      ci = c.hi(cd);
+      if (ci == h) {
         closed = true;
         break;
       }
     }
-    if (closed && on_border && fac[h] != k_null) ++r.border_vertices_with_inner_halfedge;
+    if (closed && on_border && c.fi(face(hd, g)) != k_null) ++c.r.border_vertices_with_inner_halfedge;
     if (!closed)
-      problem(Mesh_problem_kind::vertex_cycle, "vertex", v,
-              "the walk around it via opposite(next(h)) from halfedge " + std::to_string(h) + " does not close");
+      c.problem(Mesh_problem_kind::vertex_cycle, "vertex", v,
+                "the walk around it via opposite(next(h)) from halfedge " + std::to_string(h) + " does not close");
     else if (len != in_count[v]) {
-      ++r.non_manifold_vertices;
-      problem(Mesh_problem_kind::non_manifold_vertex, "vertex", v,
-              std::to_string(in_count[v]) + " halfedges end at it but its fan has only " + std::to_string(len) +
-                  ": several fans meet here");
+      ++c.r.non_manifold_vertices;
+      c.problem(Mesh_problem_kind::non_manifold_vertex, "vertex", v,
+                std::to_string(in_count[v]) + " halfedges end at it but its fan has only " + std::to_string(len) +
+                    ": several fans meet here");
     } else if (border_in > 1) {
       // The border links can join two fans into one closed walk: the walk
       // is complete, yet the border passes through v more than once.
-      ++r.non_manifold_vertices;
-      problem(Mesh_problem_kind::non_manifold_vertex, "vertex", v,
-              "the border passes through it " + std::to_string(border_in) + " times: several fans meet here");
+      ++c.r.non_manifold_vertices;
+      c.problem(Mesh_problem_kind::non_manifold_vertex, "vertex", v,
+                "the border passes through it " + std::to_string(border_in) + " times: several fans meet here");
     }
+  }
+}
+
+/// The two ends of h as dense vertex numbers, if h and its opposite are live.
+template <class G>
+bool halfedge_ends(const Context<G>& c, halfedge_descriptor_t<G> hd, std::uint32_t& s, std::uint32_t& t) {
+  const auto od = opposite(hd, c.g);
+  if (!is_ref(c.hi(od))) return false;
+  t = c.vi(target(hd, c.g));
+  s = c.vi(target(od, c.g));
+  return is_ref(t) && is_ref(s);
+}
+
+/// Pass 7: connected components of the vertex–edge graph (isolated vertices
+/// count); returns the union-find for the genus.
+template <class G>
+Union_find count_components(Context<G>& c) {
+  Union_find uf(c.vi.bound());
+  for (auto hd : halfedges(c.g)) {
+    std::uint32_t s = 0, t = 0;
+    if (is_ref(c.hi(hd)) && halfedge_ends(c, hd, s, t)) uf.unite(t, s);
+  }
+  for (std::size_t v = 0; v < c.vi.bound(); ++v)
+    if (c.vi.is_live(v) && uf.find(static_cast<std::uint32_t>(v)) == v) ++c.r.components;
+  return uf;
+}
+
+/// Pass 8 (valid meshes only): genus per component with faces, summed;
+/// left empty where 2 − χ_c − b_c is odd or negative.
+template <class G>
+void compute_genus(Context<G>& c, Union_find& uf) {
+  const G& g = c.g;
+  const std::size_t nv = c.vi.bound();
+  std::vector<long> chi(nv, 0), loops(nv, 0);
+  std::vector<char> has_face(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v)
+    if (c.vi.is_live(v)) ++chi[uf.find(static_cast<std::uint32_t>(v))];
+  std::vector<char> loop_seen(c.hi.bound(), 0);
+  for (auto hd : halfedges(g)) {
+    const std::uint32_t i = c.hi(hd);
+    if (!is_ref(i)) continue;
+    const std::uint32_t root = uf.find(c.vi(target(hd, g)));
+    if (i < c.hi(opposite(hd, g))) --chi[root]; // one per edge
+    if (c.fi(face(hd, g)) == k_null && !loop_seen[i]) {
+      ++loops[root];
+      halfedge_descriptor_t<G> cd = hd;
+      for (std::uint32_t ci = i; !loop_seen[ci]; cd = next(cd, g), ci = c.hi(cd)) loop_seen[ci] = 1;
+    }
+  }
+  for (auto fd : faces(g)) {
+    if (!is_ref(c.fi(fd))) continue;
+    const std::uint32_t root = uf.find(c.vi(target(halfedge(fd, g), g)));
+    ++chi[root];
+    has_face[root] = 1;
+  }
+  long genus = 0;
+  bool defined = true;
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (!c.vi.is_live(v) || !has_face[v] || uf.find(static_cast<std::uint32_t>(v)) != v) continue;
+    const long twice = 2 - chi[v] - loops[v];
+    if (twice < 0 || twice % 2 != 0) defined = false;
+    else genus += twice / 2;
+  }
+  if (defined) c.r.genus = genus;
+}
+
+} // namespace detail::mesh_check
+
+/// Checks every halfedge invariant of g and counts its elements, boundary
+/// loops and components. Never throws on a corrupt mesh and never loops:
+/// every walk is bounded. Runs in time linear in the index bounds, in named
+/// passes (detail::mesh_check) that follow g's own links: besides three
+/// dense-number tables it holds 5 bytes per halfedge and ~25 per vertex.
+template <class G>
+  requires FaceListGraph<G> && HalfedgeListGraph<G> && VertexListGraph<G> && EdgeListGraph<G>
+Mesh_report check_mesh(const G& g) {
+  using namespace detail;
+  using namespace detail::mesh_check;
+  Mesh_report r;
+  Context<G> c(g, r);
+  {
+    std::vector<std::uint8_t> pred_count(c.hi.bound(), 0);
+    check_halfedge_links(c, pred_count);
+    check_next_unique(c, pred_count);
+  }
+  check_edges(c);
+  {
+    std::vector<std::uint32_t> seen_by(c.hi.bound(), k_null);
+    check_face_cycles(c, seen_by);
+    count_boundary_loops(c, seen_by);
+    std::fill(seen_by.begin(), seen_by.end(), k_null);
+    check_vertex_fans(c, seen_by);
   }
 
   r.valid = r.problem_count == r.non_manifold_vertices;
@@ -492,44 +627,8 @@ Mesh_report check_mesh(const G& g) {
   if (r.faces == 0) r.is_triangle_mesh = r.is_quad_mesh = true;
   r.euler_characteristic = static_cast<long>(r.vertices) - static_cast<long>(r.edges) + static_cast<long>(r.faces);
 
-  // Components: union-find over vertices joined by edges.
-  Union_find uf(nv_bound);
-  for (std::uint32_t i : order)
-    if (is_ref(tgt[i]) && is_ref(opp[i]) && is_ref(tgt[opp[i]])) uf.unite(tgt[i], tgt[opp[i]]);
-  for (std::size_t v = 0; v < nv_bound; ++v)
-    if (live_v[v] && uf.find(static_cast<std::uint32_t>(v)) == v) ++r.components;
-
-  // Genus per component with faces, only where it is well defined.
-  if (r.ok()) {
-    std::vector<long> chi(nv_bound, 0), loops(nv_bound, 0);
-    std::vector<char> has_face(nv_bound, 0);
-    for (std::size_t v = 0; v < nv_bound; ++v)
-      if (live_v[v]) ++chi[uf.find(static_cast<std::uint32_t>(v))];
-    std::vector<char> loop_seen(nh_bound, 0);
-    for (std::uint32_t i : order) {
-      std::uint32_t root = uf.find(tgt[i]);
-      if (i < opp[i]) --chi[root]; // one per edge
-      if (fac[i] == k_null && !loop_seen[i]) {
-        ++loops[root];
-        for (std::uint32_t c = i; !loop_seen[c]; c = nxt[c]) loop_seen[c] = 1;
-      }
-    }
-    for (std::size_t f = 0; f < nf_bound; ++f)
-      if (live_f[f]) {
-        std::uint32_t root = uf.find(tgt[face_start[f]]);
-        ++chi[root];
-        has_face[root] = 1;
-      }
-    long genus = 0;
-    bool defined = true;
-    for (std::size_t v = 0; v < nv_bound; ++v) {
-      if (!live_v[v] || !has_face[v] || uf.find(static_cast<std::uint32_t>(v)) != v) continue;
-      long twice = 2 - chi[v] - loops[v];
-      if (twice < 0 || twice % 2 != 0) defined = false;
-      else genus += twice / 2;
-    }
-    if (defined) r.genus = genus;
-  }
+  Union_find uf = count_components(c);
+  if (r.ok()) compute_genus(c, uf);
   return r;
 }
 
@@ -810,26 +909,31 @@ inline std::string list(const std::vector<std::size_t>& v) {
 
 } // namespace detail
 
-/// Checks a polygon soup before a halfedge mesh is built from it; see the
-/// header comment for what is looked for. Linear time up to small sorts.
-inline Soup_report check_soup(const Polygon_soup& soup) {
-  using namespace detail;
-  Soup_report r;
-  r.points = soup.num_points();
-  r.faces = soup.num_faces();
-  auto add = [&](Soup_problem_kind kind, std::string element, std::string msg, std::vector<std::size_t> faces,
-                 std::vector<std::size_t> verts) {
+namespace detail::soup_check {
+
+/// Records one soup problem (counted always, kept up to max_problems).
+struct Problem_sink {
+  Soup_report& r;
+  void operator()(Soup_problem_kind kind, std::string element, std::string msg, std::vector<std::size_t> faces,
+                  std::vector<std::size_t> verts) const {
     ++r.problem_count;
     if (r.problems.size() < Soup_report::max_problems)
       r.problems.push_back({kind, std::move(element), std::move(msg), std::move(faces), std::move(verts)});
-  };
+  }
+};
 
+/// Points with a NaN or infinite coordinate.
+inline void check_points(const Polygon_soup& soup, Soup_report& r, const Problem_sink& add) {
   for (std::size_t p = 0; p < soup.num_points(); ++p)
     if (!soup.points[p].allFinite()) {
       ++r.non_finite_points;
       add(Soup_problem_kind::non_finite_point, "point " + std::to_string(p), "has a NaN or infinite coordinate", {},
           {p});
     }
+}
+
+/// Faces with an index out of range, fewer than three corners or a repeated corner.
+inline void check_faces(const Polygon_soup& soup, Soup_report& r, const Problem_sink& add) {
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     auto c = soup.face(f);
     if (!face_in_range(soup, f)) {
@@ -851,18 +955,24 @@ inline Soup_report check_soup(const Polygon_soup& soup) {
           "repeats a corner (corners " + list(vs) + ")", {f}, vs);
     }
   }
+}
 
-  Soup_edges e = soup_edges(soup);
+/// Faces with the same corner set as an earlier face.
+inline void check_duplicates(const Polygon_soup& soup, const Soup_edges& e, Soup_report& r, const Problem_sink& add) {
   for (auto [f, g] : duplicate_faces(soup, e)) {
     ++r.duplicate_faces;
     add(Soup_problem_kind::duplicate_face, "face " + std::to_string(f),
         "has the same corners as face " + std::to_string(g), {g, f}, {});
   }
+}
+
+/// Per undirected edge: border (one face), inconsistent orientation (two
+/// faces, same direction) or fin (three or more faces).
+inline void check_edge_groups(const Soup_edges& e, Soup_report& r, const Problem_sink& add) {
   for (std::size_t g = 0; g + 1 < e.group_begin.size(); ++g) {
     std::uint32_t b = e.group_begin[g], end = e.group_begin[g + 1];
     ++r.edges;
     const Soup_half& x = e.halves[b];
-    std::string name = "edge (" + std::to_string(x.lo) + ", " + std::to_string(x.hi) + ")";
     if (end - b == 1) {
       ++r.border_edges;
     } else if (end - b == 2) {
@@ -870,7 +980,8 @@ inline Soup_report check_soup(const Polygon_soup& soup) {
       if (x.forward == y.forward) {
         ++r.inconsistent_edges;
         std::uint32_t from = x.forward ? x.lo : x.hi, to = x.forward ? x.hi : x.lo;
-        add(Soup_problem_kind::inconsistent_orientation, name,
+        add(Soup_problem_kind::inconsistent_orientation,
+            "edge (" + std::to_string(x.lo) + ", " + std::to_string(x.hi) + ")",
             "faces " + std::to_string(x.face) + " and " + std::to_string(y.face) + " both use it as " +
                 std::to_string(from) + "→" + std::to_string(to) + " (one of them is flipped, or they duplicate)",
             {x.face, y.face}, {x.lo, x.hi});
@@ -879,21 +990,26 @@ inline Soup_report check_soup(const Polygon_soup& soup) {
       ++r.non_manifold_edges;
       std::vector<std::size_t> fs;
       for (std::uint32_t i = b; i < end; ++i) fs.push_back(e.halves[i].face);
-      add(Soup_problem_kind::non_manifold_edge, name,
+      add(Soup_problem_kind::non_manifold_edge, "edge (" + std::to_string(x.lo) + ", " + std::to_string(x.hi) + ")",
           "is shared by " + std::to_string(end - b) + " faces (" + list(fs) + "); at most 2 are allowed", fs,
           {x.lo, x.hi});
     }
   }
+}
 
-  // Fans per vertex: roots of the corner union-find.
-  Union_find uf = soup_fans(soup, e);
+/// Vertices whose faces form several fans (bow-ties), and isolated points
+/// (used by no face; points used only by unusable faces count as used).
+inline void check_fans(const Polygon_soup& soup, const Soup_edges& e, Soup_report& r, const Problem_sink& add) {
   std::vector<std::uint32_t> fans(soup.num_points(), 0);
   std::vector<char> used(soup.num_points(), 0);
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    if (!e.usable[f]) continue;
-    for (std::uint32_t c = soup.offsets[f]; c < soup.offsets[f + 1]; ++c) {
-      used[soup.indices[c]] = 1;
-      if (uf.find(c) == c) ++fans[soup.indices[c]];
+  {
+    Union_find uf = soup_fans(soup, e);
+    for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+      if (!e.usable[f]) continue;
+      for (std::uint32_t c = soup.offsets[f]; c < soup.offsets[f + 1]; ++c) {
+        used[soup.indices[c]] = 1;
+        if (uf.find(c) == c) ++fans[soup.indices[c]];
+      }
     }
   }
   for (std::size_t v = 0; v < soup.num_points(); ++v) {
@@ -903,14 +1019,16 @@ inline Soup_report check_soup(const Polygon_soup& soup) {
           "its faces form " + std::to_string(fans[v]) + " fans that meet only at this vertex (bow-tie)", {}, {v});
     }
   }
-  // Points used only by unusable faces still count as used (they are not isolated).
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
     if (!e.usable[f])
       for (auto i : soup.face(f))
         if (i < soup.num_points()) used[i] = 1;
   for (std::size_t v = 0; v < soup.num_points(); ++v) r.isolated_points += !used[v];
+}
 
-  // Zero-area faces: vector area (Newell) against the longest edge squared.
+/// Zero-area faces (a warning): vector area (Newell) against the longest
+/// edge squared.
+inline void check_zero_area(const Polygon_soup& soup, const Soup_edges& e, Soup_report& r, const Problem_sink& add) {
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     if (!e.usable[f]) continue;
     auto c = soup.face(f);
@@ -927,8 +1045,30 @@ inline Soup_report check_soup(const Polygon_soup& soup) {
       add(Soup_problem_kind::zero_area_face, "face " + std::to_string(f), "has zero area", {f}, {});
     }
   }
+}
+
+} // namespace detail::soup_check
+
+/// check_soup() on the edge table e = detail::soup_edges(soup) the caller
+/// already built (build_mesh() builds one and shares it with the linking).
+inline Soup_report check_soup(const Polygon_soup& soup, const detail::Soup_edges& e) {
+  using namespace detail::soup_check;
+  Soup_report r;
+  r.points = soup.num_points();
+  r.faces = soup.num_faces();
+  const Problem_sink add{r};
+  check_points(soup, r, add);
+  check_faces(soup, r, add);
+  check_duplicates(soup, e, r, add);
+  check_edge_groups(e, r, add);
+  check_fans(soup, e, r, add);
+  check_zero_area(soup, e, r, add);
   return r;
 }
+
+/// Checks a polygon soup before a halfedge mesh is built from it; see the
+/// header comment for what is looked for. Linear time up to small sorts.
+inline Soup_report check_soup(const Polygon_soup& soup) { return check_soup(soup, detail::soup_edges(soup)); }
 
 // ---------------------------------------------------------------------------
 // Soup repair

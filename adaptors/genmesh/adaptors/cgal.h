@@ -19,11 +19,14 @@
 //   Iterate vertices(g) for live elements; size scratch by index_bound.
 // - Polyhedron_3 has index maps only when its items carry ids
 //   (CGAL::Polyhedron_items_with_id_3). get(genmesh::vertex_index, p) then
-//   checks the ids (one O(n) pass per call: get the map once, not per
-//   element) and renumbers them in iteration order if they are not a
-//   valid numbering (writing to the ids of a const polyhedron, as CGAL's own
-//   get_initialized_*_index_map does); maps obtained before a later edit go
-//   stale. A Polyhedron_3 without ids has points but no index maps:
+//   makes sure the ids are a valid numbering, renumbering them in iteration
+//   order if not (writing to the ids of a const polyhedron, as CGAL's own
+//   get_initialized_*_index_map does). The check is O(size) once after each
+//   edit and O(1) after that (a per-thread stamp of sizes and last elements,
+//   see detail::ensure_polyhedron_ids), so asking for the map per element
+//   costs nothing; maps obtained before a later edit go stale. Code that
+//   writes ids by hand behind genmesh's back between two calls, keeping
+//   sizes and last elements, must renumber them validly itself. A Polyhedron_3 without ids has points but no index maps:
 //   HasIndexMap is false and genmesh code must fall back to hashing
 //   descriptors.
 //
@@ -33,8 +36,9 @@
 //   boost::property_map<Halfedge_mesh<P>, CGAL::vertex_point_t> and
 //   get(CGAL::vertex_point, m) (also get/put(vertex_point, m, v[, p]));
 //   boost::edge_weight (edge lengths, for CGAL points);
-//   boost::vertex_index_t, CGAL::halfedge_index_t, boost::edge_index_t,
-//   CGAL::face_index_t maps (the raw idx());
+//   CGAL::halfedge_index_t and CGAL::face_index_t maps (the raw idx(), with
+//   the three-argument get; also on Incidence_mesh; boost::vertex_index_t
+//   and boost::edge_index_t come with the mesh headers);
 //   CGAL::dynamic_{vertex,halfedge,edge,face}_property_t<T> maps, backed by
 //   the mesh's own anonymous typed properties (vector speed; removed when the
 //   last copy of the map goes), or for a const mesh a vector sized by the
@@ -76,6 +80,7 @@
 #include <CGAL/squared_distance_3.h>
 
 #include <cstddef>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -205,12 +210,12 @@ bool ids_are_numbering(It first, It last, std::size_t n, Id id) {
   return true;
 }
 
-// Makes the polyhedron's vertex/halfedge/face ids a valid numbering (halfedge
-// ids paired: opposite halfedges get 2k and 2k+1, so edge id = halfedge id / 2),
-// touching nothing when they already are one.
+// Renumbers the polyhedron's vertex/halfedge/face ids where they are not a
+// valid numbering (halfedge ids paired: opposite halfedges get 2k and 2k+1,
+// so edge id = halfedge id / 2), touching nothing when they already are one.
+// O(size).
 template <class Poly>
-void ensure_polyhedron_ids(const Poly& cp) {
-  Poly& p = const_cast<Poly&>(cp);
+void number_polyhedron_ids(Poly& p) {
   if (!ids_are_numbering(p.vertices_begin(), p.vertices_end(), p.size_of_vertices(),
                          [](const auto& v) { return v.id(); })) {
     std::size_t i = 0;
@@ -232,6 +237,66 @@ void ensure_polyhedron_ids(const Poly& cp) {
     std::size_t i = 0;
     for (auto f = p.facets_begin(); f != p.facets_end(); ++f) f->id() = i++;
   }
+}
+
+// What a polyhedron looked like when its ids were last found to be a valid
+// numbering: its address, its three sizes, and the address and id of the
+// last vertex, halfedge and facet. Polyhedron_3 only appends elements (to
+// the end of its lists, with the id -1 of a new item or the id copied from
+// a live one) and removes them; so after any edit that could break the
+// numbering, a size differs or the last element is another one, at another
+// address or (memory reused) with another id. Comparing stamps is O(1).
+struct Polyhedron_id_stamp {
+  const void* poly = nullptr;
+  std::size_t sizes[3] = {0, 0, 0};
+  const void* last[3] = {nullptr, nullptr, nullptr};
+  std::size_t last_id[3] = {0, 0, 0};
+  bool operator==(const Polyhedron_id_stamp&) const = default;
+};
+
+template <class It>
+void stamp_last(It first, It last, const void*& address, std::size_t& id) {
+  if (first == last) return;
+  const auto& x = *std::prev(last);
+  address = &x;
+  id = x.id();
+}
+
+template <class Poly>
+Polyhedron_id_stamp polyhedron_id_stamp(const Poly& p) {
+  Polyhedron_id_stamp s;
+  s.poly = &p;
+  s.sizes[0] = p.size_of_vertices();
+  s.sizes[1] = p.size_of_halfedges();
+  s.sizes[2] = p.size_of_facets();
+  stamp_last(p.vertices_begin(), p.vertices_end(), s.last[0], s.last_id[0]);
+  stamp_last(p.halfedges_begin(), p.halfedges_end(), s.last[1], s.last_id[1]);
+  stamp_last(p.facets_begin(), p.facets_end(), s.last[2], s.last_id[2]);
+  return s;
+}
+
+// Makes the polyhedron's ids a valid numbering (number_polyhedron_ids) unless
+// this thread found them valid since the polyhedron's last edit: a stamp
+// comparison, O(1), so get(genmesh::vertex_index, p) may be called per
+// element. The stamps of the last 16 polyhedra are kept per thread (a
+// polyhedron that drops out is checked again, O(size), on its next use).
+// Writes to the ids of a const polyhedron, as CGAL's own
+// get_initialized_*_index_map does.
+template <class Poly>
+void ensure_polyhedron_ids(const Poly& cp) {
+  constexpr std::size_t slots = 16;
+  thread_local Polyhedron_id_stamp seen[slots];
+  thread_local std::size_t next_slot = 0;
+  const Polyhedron_id_stamp now = polyhedron_id_stamp(cp);
+  std::size_t slot = slots;
+  for (std::size_t i = 0; i < slots; ++i) {
+    if (seen[i] == now) return;
+    if (seen[i].poly == now.poly) slot = i;
+  }
+  Poly& p = const_cast<Poly&>(cp);
+  number_polyhedron_ids(p);
+  if (slot == slots) slot = next_slot++ % slots;
+  seen[slot] = polyhedron_id_stamp(cp);
 }
 
 // The index map of a Polyhedron_3 whose items carry ids.
@@ -418,17 +483,20 @@ struct property_map<genmesh::Halfedge_mesh<P>, CGAL::vertex_point_t> {
   using const_type = type;
 };
 
-#define GENMESH_HM_INDEX_PROPERTY_MAP(TAG, INDEX)                                        \
-  template <class P>                                                                   \
-  struct property_map<genmesh::Halfedge_mesh<P>, TAG> {                                \
-    using type = genmesh::Index_map<genmesh::INDEX>;                                   \
-    using const_type = type;                                                           \
-  };
-GENMESH_HM_INDEX_PROPERTY_MAP(boost::vertex_index_t, Vertex_index)
-GENMESH_HM_INDEX_PROPERTY_MAP(CGAL::halfedge_index_t, Halfedge_index)
-GENMESH_HM_INDEX_PROPERTY_MAP(boost::edge_index_t, Edge_index)
-GENMESH_HM_INDEX_PROPERTY_MAP(CGAL::face_index_t, Face_index)
-#undef GENMESH_HM_INDEX_PROPERTY_MAP
+// CGAL's halfedge and face index tags on every genmesh mesh (Boost's
+// vertex_index and edge_index: <genmesh/detail/mesh_functions.h>).
+template <template <class> class M, class P>
+  requires genmesh::detail::is_genmesh_mesh<M>
+struct property_map<M<P>, CGAL::halfedge_index_t> {
+  using type = genmesh::Index_map<genmesh::Halfedge_index>;
+  using const_type = type;
+};
+template <template <class> class M, class P>
+  requires genmesh::detail::is_genmesh_mesh<M>
+struct property_map<M<P>, CGAL::face_index_t> {
+  using type = genmesh::Index_map<genmesh::Face_index>;
+  using const_type = type;
+};
 
 #define GENMESH_HM_DYNAMIC_PROPERTY_MAP(TAG, INDEX)                                      \
   template <class P, class T>                                                          \
@@ -479,22 +547,28 @@ detail::Cgal_edge_length_map<K> get(boost::edge_weight_t, const Halfedge_mesh<CG
   return {&m};
 }
 
-/// Raw indices (dense only when m has no removed elements).
-template <class P>
-Index_map<Vertex_index> get(boost::vertex_index_t, const Halfedge_mesh<P>&) {
+/// CGAL's halfedge and face index maps of any genmesh mesh (Halfedge_mesh,
+/// Incidence_mesh), two- and three-argument get as Boost's PropertyGraph
+/// concept asks: raw indices, dense only when m has no removed elements.
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Index_map<Halfedge_index> get(CGAL::halfedge_index_t, const M<P>&) {
   return {};
 }
-template <class P>
-Index_map<Halfedge_index> get(CGAL::halfedge_index_t, const Halfedge_mesh<P>&) {
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t get(CGAL::halfedge_index_t, const M<P>&, Halfedge_index h) {
+  return h.idx();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Index_map<Face_index> get(CGAL::face_index_t, const M<P>&) {
   return {};
 }
-template <class P>
-Index_map<Edge_index> get(boost::edge_index_t, const Halfedge_mesh<P>&) {
-  return {};
-}
-template <class P>
-Index_map<Face_index> get(CGAL::face_index_t, const Halfedge_mesh<P>&) {
-  return {};
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t get(CGAL::face_index_t, const M<P>&, Face_index f) {
+  return f.idx();
 }
 
 // Dynamic properties. The by-value tag and the Halfedge_mesh parameter make

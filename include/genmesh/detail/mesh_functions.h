@@ -2,13 +2,18 @@
 // own meshes, written once.
 //
 // What it is: the part of boost::graph_traits every genmesh mesh shares
-// (detail::Mesh_graph_traits) and num_vertices, vertices, source, target, next, prev, opposite,
-// edge, halfedge, face, degree, add_/remove_ elements, the index and point
-// property maps, index_bound, reserve and collect_garbage for every mesh class
-// template M that opts in with detail::is_genmesh_mesh<M> = true
-// (Halfedge_mesh, Incidence_mesh). Each forwards to M<P>'s member of the same
-// name; what only one mesh has (set_next, out_edges, add_edge's return value,
-// load_soup, ...) stays beside that mesh.
+// (detail::Mesh_graph_traits: Boost's bidirectional, adjacency, vertex- and
+// edge-list traversal) and num_vertices, vertices, source, target, next, prev,
+// opposite, edge, halfedge, face, degree, out_edges, in_edges, out_degree,
+// in_degree, adjacent_vertices, add_/remove_ elements, the index and point
+// property maps (genmesh's tags, and Boost's vertex_index / edge_index with
+// the two- and three-argument get of Boost's PropertyGraph concept),
+// index_bound, reserve and collect_garbage for every mesh class template M
+// that opts in with detail::is_genmesh_mesh<M> = true (Halfedge_mesh,
+// Incidence_mesh). Each forwards to M<P>'s member of the same name; what only
+// one mesh has (set_next, add_edge's return value, load_soup, ...) stays
+// beside that mesh. CGAL's own index tags (halfedge_index_t, face_index_t)
+// need CGAL's headers: <genmesh/adaptors/cgal.h>.
 //
 // Guarantees: every function takes `M<P>&`, not a bare template parameter, so
 // it is more specialized than CGAL's generic helpers that take any graph
@@ -18,6 +23,9 @@
 // Index_map and Garbage_collection_maps it uses are defined; not for direct
 // use.
 #pragma once
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/graph/properties.hpp>
 
 #include <cstddef>
 #include <type_traits>
@@ -32,10 +40,16 @@ inline constexpr bool is_genmesh_mesh = false;
 
 /// What boost::graph_traits says of every genmesh mesh (genmesh's index
 /// types and iterators, 32-bit indices in std::size_t counts, no parallel
-/// edges); each mesh's specialization adds its traversal category and
-/// whatever else it offers.
+/// edges, Boost's bidirectional and adjacency traversal as CGAL's
+/// Surface_mesh); each mesh's specialization adds its in_edge_iterator,
+/// out_edge_iterator and adjacency_iterator.
 template <class P>
 struct Mesh_graph_traits {
+  struct traversal_category : public virtual boost::bidirectional_graph_tag,
+                              public virtual boost::vertex_list_graph_tag,
+                              public virtual boost::edge_list_graph_tag,
+                              public virtual boost::adjacency_graph_tag {};
+
   using vertex_descriptor = Vertex_index;
   using halfedge_descriptor = Halfedge_index;
   using edge_descriptor = Edge_index;
@@ -89,6 +103,52 @@ template <template <class> class M, class P>
 Index_map<Face_index> get(face_index_t, const M<P>&) {
   return {};
 }
+/// The three-argument get of Boost's PropertyGraph concept: x's index.
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t get(vertex_index_t, const M<P>&, Vertex_index v) {
+  return v.idx();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t get(halfedge_index_t, const M<P>&, Halfedge_index h) {
+  return h.idx();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t get(edge_index_t, const M<P>&, Edge_index e) {
+  return e.idx();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t get(face_index_t, const M<P>&, Face_index f) {
+  return f.idx();
+}
+
+/// Boost's vertex_index and edge_index (two- and three-argument get), what
+/// Boost's graph algorithms default to: raw indices, dense only when m has
+/// no removed elements (size scratch by index_bound, not num_vertices).
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Index_map<Vertex_index> get(boost::vertex_index_t, const M<P>&) {
+  return {};
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t get(boost::vertex_index_t, const M<P>&, Vertex_index v) {
+  return v.idx();
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Index_map<Edge_index> get(boost::edge_index_t, const M<P>&) {
+  return {};
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t get(boost::edge_index_t, const M<P>&, Edge_index e) {
+  return e.idx();
+}
+
 template <template <class> class M, class P>
   requires detail::is_genmesh_mesh<M>
 std::size_t index_bound(vertex_index_t, const M<P>& m) {
@@ -228,6 +288,38 @@ std::size_t degree(Vertex_index v, const M<P>& m) {
   return m.degree(v);
 }
 
+// ---- IncidenceGraph, BidirectionalGraph, AdjacencyGraph (Boost) ------------
+// The order of the edges around v is each mesh's (see its out_edges member).
+
+/// Edges leaving v, oriented so that source(e, m) == v.
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+auto out_edges(Vertex_index v, const M<P>& m) {
+  return m.out_edges(v);
+}
+/// Edges entering v, oriented so that target(e, m) == v.
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+auto in_edges(Vertex_index v, const M<P>& m) {
+  return m.in_edges(v);
+}
+/// The neighbours of v (the other ends of its edges).
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+auto adjacent_vertices(Vertex_index v, const M<P>& m) {
+  return m.adjacent_vertices(v);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t out_degree(Vertex_index v, const M<P>& m) {
+  return m.degree(v);
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::size_t in_degree(Vertex_index v, const M<P>& m) {
+  return m.degree(v);
+}
+
 // ---- FaceGraph --------------------------------------------------------------
 
 template <template <class> class M, class P>
@@ -290,3 +382,20 @@ Garbage_collection_maps collect_garbage(M<P>& m, Garbage_order order = Garbage_o
 }
 
 } // namespace genmesh
+
+// Boost's property_map for its own index tags (the type the two-argument get
+// above returns), on every genmesh mesh.
+namespace boost {
+template <template <class> class M, class P>
+  requires genmesh::detail::is_genmesh_mesh<M>
+struct property_map<M<P>, boost::vertex_index_t> {
+  using type = genmesh::Index_map<genmesh::Vertex_index>;
+  using const_type = type;
+};
+template <template <class> class M, class P>
+  requires genmesh::detail::is_genmesh_mesh<M>
+struct property_map<M<P>, boost::edge_index_t> {
+  using type = genmesh::Index_map<genmesh::Edge_index>;
+  using const_type = type;
+};
+} // namespace boost
