@@ -69,7 +69,8 @@ inline void read_one(genmesh::File_format format, const std::uint8_t* data, std:
 }
 
 /// A command line for the CLI target, from fuzz input text: one argument per
-/// line (at most 16, each at most 256 bytes) up to a line "----"; what
+/// line (at most 16, each at most 256 bytes; an empty line is an empty
+/// argument, a final newline none) up to a line "----"; what
 /// follows is the crease file's content. In arguments, "@in" stands for
 /// `in` (a small valid mesh), "@bad" for `bad` (a small non-manifold one),
 /// "@rep" for `rep` (a soup with a face visiting a point twice),
@@ -89,7 +90,7 @@ struct Cli_paths {
 inline Cli_case parse_cli_case(std::string_view text, const Cli_paths& paths) {
   Cli_case c;
   std::size_t i = 0;
-  while (i <= text.size()) {
+  while (i < text.size()) {   // a final newline starts no argument
     std::size_t nl = text.find('\n', i);
     if (nl == std::string_view::npos) nl = text.size();
     std::string_view line = text.substr(i, nl - i);
