@@ -18,6 +18,12 @@
 #include <string>
 #include <sys/wait.h>
 
+#include <csignal>
+#include <thread>
+#include <unistd.h>
+
+#include "../fuzz/genmesh_fuzz.h"
+
 namespace {
 
 using genmesh_test::real_mesh;
@@ -302,6 +308,166 @@ TEST(Cli, SharpCreasesKeepTheCube) {
   }
   EXPECT_EQ(vertices, 386);            // 8 + 12·7 + 6·7² after three levels
   EXPECT_EQ(on_cube_edges, 8 + 12 * 7); // every edge cut into 8 straight segments
+}
+
+// ---- hostile use (issue 14) ----------------------------------------------------
+
+// Single-quotes an argument for the shell.
+std::string shell_quote(const std::string& a) {
+  std::string q = "'";
+  for (char c : a) {
+    if (c == '\'') q += "'\\''";
+    else q += c;
+  }
+  return q + "'";
+}
+
+// The regression corpus of the CLI target (tests/fuzz/regressions/cli): one
+// file per finding, "# expect N" then the fuzz input (genmesh_fuzz::
+// parse_cli_case). Each must exit N, keep its messages short, and name a
+// file (or give the usage) when it fails.
+TEST(CliHostile, RegressionCorpusGivesTheDocumentedExitCodes) {
+  const std::filesystem::path dir = std::filesystem::path(GENMESH_SOURCE_DIR) / "tests/fuzz/regressions/cli";
+  const genmesh_fuzz::Cli_paths paths{tmp_path("corpus_in.off"), tmp_path("corpus_bad.off"), tmp_path("corpus_rep.off"),
+                                      tmp_path("corpus_creases.txt"), tmp_path("corpus_out")};
+  write_file(paths.in, genmesh_fuzz::cli_cube_off);
+  write_file(paths.bad, genmesh_fuzz::cli_fin_off);
+  write_file(paths.rep, genmesh_fuzz::cli_repeat_off);
+  std::size_t cases = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string text = read_file(entry.path().string());
+    ASSERT_TRUE(text.starts_with("# expect ")) << entry.path();
+    const int expected = std::stoi(text.substr(9));
+    const genmesh_fuzz::Cli_case c = genmesh_fuzz::parse_cli_case(std::string_view(text).substr(text.find('\n') + 1), paths);
+    ASSERT_TRUE(c.runnable) << entry.path();
+    write_file(paths.creases, c.creases);
+    std::string args;
+    for (const auto& a : c.args) args += shell_quote(a) + " ";
+    SCOPED_TRACE(entry.path().filename().string() + ": genmesh " + args);
+    const Cli_run r = genmesh(args);
+    EXPECT_EQ(r.exit_code, expected) << r.out << r.err;
+    EXPECT_LT(r.err.size(), 4000u) << r.err.substr(0, 4000);
+    EXPECT_LT(r.out.size(), 4000u);
+    if (expected != 0) {
+      bool named = r.err.find("usage") != std::string::npos;
+      for (const auto& f : {paths.in, paths.bad, paths.rep, paths.creases, std::string("/:")})
+        named = named || r.err.find(f) != std::string::npos || r.out.find(f) != std::string::npos;
+      EXPECT_TRUE(named) << "no file named in: " << r.err << r.out;
+    }
+    ++cases;
+  }
+  EXPECT_GE(cases, 15u);
+}
+
+TEST(CliHostile, ErrorsNameTheFileAndTheLineAndStayShort) {
+  const std::string cube = tmp_path("hostile_cube.off");
+  write_file(cube, genmesh_fuzz::cli_cube_off);
+  // A 1 MB crease line is not echoed whole.
+  const std::string creases = tmp_path("long_creases.txt");
+  write_file(creases, "0 1 inf\n0 " + std::string(1 << 20, '7') + " 1\n");
+  Cli_run r = genmesh("subdivide " + cube + " " + tmp_path("x.off") + " --scheme catmull-clark --creases " + creases);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("long_creases.txt:2:"), std::string::npos) << r.err.substr(0, 500);
+  EXPECT_LT(r.err.size(), 1000u);
+  // Crease errors that are not parse errors name their line too.
+  write_file(creases, "# the cube's edges\n0 1 inf\n\n1 2 1\n0 6 1\n");
+  r = genmesh("subdivide " + cube + " " + tmp_path("x.off") + " --scheme catmull-clark --creases " + creases);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("long_creases.txt:5: (0, 6) is not an edge"), std::string::npos) << r.err;
+  // A degenerate 300k-corner face: a short report (not one number per
+  // corner), exit 1, on every backend.
+  std::string big = "OFF\n300000 1 0\n";
+  for (int i = 0; i < 300000; ++i) big += std::to_string(i) + " 0 0\n";
+  big += "300001";
+  for (int i = 0; i < 300000; ++i) big += " " + std::to_string(i);
+  big += " 0\n";
+  const std::string huge = tmp_path("degenerate_big_face.off");
+  write_file(huge, big);
+  for (const char* backend : {"halfedge", "incidence"}) {
+    r = genmesh(std::string("check ") + huge + " --backend " + backend);
+    EXPECT_EQ(r.exit_code, 1) << backend << r.err;
+    EXPECT_LT(r.out.size() + r.err.size(), 4000u) << backend;
+    EXPECT_NE(r.out.find("degenerate_big_face.off"), std::string::npos);
+  }
+  // Not a regular file, or no end: refused naming it, at once.
+  r = genmesh("info /dev/zero");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("/dev/zero: is not a regular file"), std::string::npos) << r.err;
+  r = genmesh("subdivide " + cube + " " + tmp_path("x.off") + " --scheme catmull-clark --creases /dev/zero");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("/dev/zero: is not a regular file"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("bad_alloc"), std::string::npos);
+}
+
+TEST(CliHostile, SubdivideRefusesWhatCannotFitWithTheFigures) {
+  const std::string cube = tmp_path("fit_cube.off");
+  write_file(cube, genmesh_fuzz::cli_cube_off);
+  for (const char* scheme : {"catmull-clark", "doo-sabin", "midpoint"}) {
+    Cli_run r = genmesh("subdivide " + cube + " " + tmp_path("x.off") + " --scheme " + scheme +
+                        " --levels 12 --max-memory 4G");
+    EXPECT_EQ(r.exit_code, 3) << scheme << r.out << r.err;
+    EXPECT_NE(r.err.find("fit_cube.off: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("level 1:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--max-memory"), std::string::npos) << r.err;
+  }
+  // The predicted counts are the real ones: Catmull-Clark on the cube, 2 levels.
+  Cli_run r = genmesh("subdivide " + cube + " " + tmp_path("x.off") + " --scheme catmull-clark --levels 2 --max-memory 1K");
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.err.find("level 1: 26 vertices, 48 edges, 24 faces"), std::string::npos) << r.err;
+  r = genmesh("subdivide " + cube + " " + tmp_path("x.off") + " --scheme catmull-clark --levels 2 --json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(json_int(r.out, "vertices"), 98);
+  EXPECT_EQ(json_int(r.out, "faces"), 96);
+}
+
+// Ctrl-C, TERM or HUP while the output is written: the temporary is removed,
+// the old output survives, the program dies of the signal.
+TEST(CliHostile, SignalsWhileWritingRemoveTheTemporary) {
+  const std::filesystem::path dir = tmp_path("signals");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string cube = (dir / "cube.off").string(), out = (dir / "out.off").string();
+  write_file(cube, genmesh_fuzz::cli_cube_off);
+  write_file(out, "old output\n");
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    bool caught = false;
+    for (int levels = 8; levels <= 10 && !caught; ++levels) {
+      const pid_t pid = fork();
+      ASSERT_GE(pid, 0);
+      if (pid == 0) {
+        std::freopen("/dev/null", "w", stdout);
+        const std::string l = std::to_string(levels);
+        execl(GENMESH_CLI, "genmesh", "subdivide", cube.c_str(), out.c_str(), "--scheme", "catmull-clark", "--levels",
+              l.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+      }
+      // Wait for the temporary to appear, then signal.
+      int status = 0;
+      for (;;) {
+        bool temp = false;
+        for (const auto& e : std::filesystem::directory_iterator(dir))
+          temp = temp || e.path().filename().string().starts_with(".out.off.tmp");
+        if (temp) {
+          kill(pid, sig);
+          caught = true;
+          break;
+        }
+        if (waitpid(pid, &status, WNOHANG) == pid) break;   // done before we saw it: more levels
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+      }
+      if (!caught) {
+        write_file(out, "old output\n");
+        continue;
+      }
+      ASSERT_EQ(waitpid(pid, &status, 0), pid);
+      EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << sig << " status " << status;
+    }
+    ASSERT_TRUE(caught) << "signal " << sig;
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++entries;
+    EXPECT_EQ(entries, 2u) << "signal " << sig << ": a temporary is left";
+    EXPECT_EQ(read_file(out), "old output\n");
+  }
 }
 
 } // namespace

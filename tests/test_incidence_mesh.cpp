@@ -135,6 +135,69 @@ Algebra_facts algebra_facts(const genmesh::Incidence_mesh<>& m) {
 }
 // [algebra-example]
 
+// Issue 14: next() scanned the whole face past 16 sides (a 40k-gon took
+// seconds to walk), and load_soup's repeated-corner test was quadratic.
+TEST(IncidenceMesh, HugeFacesWalkInConstantTimePerStep) {
+  // Big faces agree with Halfedge_mesh, around and across (a polygon with a
+  // fan of triangles on one side and a hole).
+  for (std::size_t n : {17u, 40u, 1000u}) {
+    genmesh::Polygon_soup s;
+    for (std::size_t i = 0; i < n; ++i)
+      s.points.emplace_back(std::cos(6.283185307179586 * double(i) / double(n)), std::sin(6.283185307179586 * double(i) / double(n)), 0);
+    s.points.emplace_back(0, 0, 1);
+    std::vector<genmesh::Polygon_soup::Index> big;
+    for (std::size_t i = 0; i < n; ++i) big.push_back(static_cast<genmesh::Polygon_soup::Index>(i));
+    s.add_face(big);
+    for (std::size_t i = 0; i + 1 < n / 2; ++i)   // triangles on the other side of half the rim
+      s.add_face({static_cast<genmesh::Polygon_soup::Index>(i + 1), static_cast<genmesh::Polygon_soup::Index>(i),
+                  static_cast<genmesh::Polygon_soup::Index>(n)});
+    SCOPED_TRACE(n);
+    expect_same_as_halfedge_mesh(s);
+  }
+  // One valid 300k-sided polygon: walking it once is 300k steps (a scan per
+  // step took minutes).
+  const std::size_t n = 300'000;
+  genmesh::Polygon_soup s;
+  std::vector<genmesh::Polygon_soup::Index> big(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    s.points.emplace_back(std::cos(double(i) * 6.283185307179586 / double(n)), std::sin(double(i) * 6.283185307179586 / double(n)), 0);
+    big[i] = static_cast<genmesh::Polygon_soup::Index>(i);
+  }
+  s.add_face(big);
+  Inc m;
+  genmesh::build_mesh(s, m);
+  const Halfedge_index h0 = halfedge(Face_index(0), m);
+  Halfedge_index h = h0;
+  std::size_t steps = 0, back = 0;
+  do {
+    ASSERT_EQ(prev(next(h, m), m), h);
+    h = next(h, m);
+    ++steps;
+  } while (h != h0 && steps <= n);
+  EXPECT_EQ(steps, n);
+  for (Halfedge_index g = opposite(h0, m); back <= n; ++back) {   // the border, the other way
+    g = next(g, m);
+    if (g == opposite(h0, m)) break;
+  }
+  EXPECT_EQ(back + 1, n);
+  EXPECT_TRUE(genmesh::check_mesh(m).ok());
+
+  // load_soup: a 300k-corner face repeating its first corner at the end is
+  // refused in one pass, naming the face and the point.
+  std::vector<genmesh::Polygon_soup::Index> rep = big;
+  rep.push_back(0);
+  genmesh::Polygon_soup bad;
+  bad.points = s.points;
+  bad.add_face(rep);
+  Inc l;
+  try {
+    l.load_soup(bad);
+    ADD_FAILURE() << "a repeated corner was loaded";
+  } catch (const genmesh::invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("face 0 visits point 0 twice"), std::string::npos) << e.what();
+  }
+}
+
 TEST(IncidenceMesh, AlgebraOnRealMeshes) {
   for (const char* name : {"elephant.off", "mushroom.off", "cross_quad.off", "elephant-with-holes.off"}) {
     SCOPED_TRACE(name);

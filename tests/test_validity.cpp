@@ -743,6 +743,50 @@ TYPED_TEST(Validity, DegenerateAndDuplicateFacesAreNamedAndRemoved) {
   EXPECT_EQ(genmesh::to_soup(g), genmesh::rotate_faces_to_lowest(tet));
 }
 
+// Issue 14: duplicate detection compared every pair of faces around an edge
+// (200k triangles on one edge took minutes); messages listed every face.
+TEST(ValidityHostile, ManyFacesOnOneEdgeAndHugeFacesStayLinearAndShort) {
+  Polygon_soup fan;
+  const std::size_t n = 200'000;
+  fan.points = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0)};
+  for (std::size_t i = 0; i < n; ++i) {
+    fan.points.emplace_back(0.5, double(i + 1), 1.0);
+    fan.add_face({0, 1, static_cast<Polygon_soup::Index>(i + 2)});
+  }
+  fan.add_face({1, 0, 2});   // the same corners as face 0, the other way round
+  fan.add_face({2, 1, 0});   // and again, rotated
+  const auto r = genmesh::check_soup(fan);
+  EXPECT_EQ(r.duplicate_faces, 2u);
+  EXPECT_EQ(r.non_manifold_edges, 3u);   // (0, 1) in n + 2 faces; (0, 2) and (1, 2) in 3
+  EXPECT_TRUE(has_problem(r, genmesh::Soup_problem_kind::duplicate_face, "face 200000"));
+  EXPECT_TRUE(has_problem(r, genmesh::Soup_problem_kind::duplicate_face, "face 200001"));
+  for (const auto& p : r.problems) EXPECT_LT(p.message.size(), 300u) << p.element;
+  for (const auto& p : r.problems) {
+    if (p.kind == genmesh::Soup_problem_kind::non_manifold_edge && p.element == "edge (0, 1)") {
+      EXPECT_EQ(p.faces.size(), n + 2);
+    }
+  }
+  EXPECT_LT(genmesh::to_string(r).size(), 20'000u);
+
+  // Same corner set in another cyclic order, sharing no edge: still a duplicate.
+  Polygon_soup five;
+  for (int i = 0; i < 5; ++i) five.points.emplace_back(std::cos(i), std::sin(i), 0);
+  five.add_face({0, 1, 2, 3, 4});
+  five.add_face({0, 2, 4, 1, 3});
+  EXPECT_EQ(genmesh::check_soup(five).duplicate_faces, 1u);
+
+  // A 1M-corner face repeating a corner: named in a short message.
+  Polygon_soup big;
+  const std::size_t m = 1'000'000;
+  for (std::size_t i = 0; i < m; ++i) big.points.emplace_back(std::cos(i * 1e-6), std::sin(i * 1e-6), 0);
+  std::vector<Polygon_soup::Index> corners(m + 1);
+  for (std::size_t i = 0; i < m; ++i) corners[i] = static_cast<Polygon_soup::Index>(i);
+  big.add_face(corners);   // the last corner is 0 again
+  const auto b = genmesh::check_soup(big);
+  EXPECT_EQ(b.degenerate_faces, 1u);
+  EXPECT_LT(genmesh::to_string(b).size(), 1000u) << genmesh::to_string(b).substr(0, 2000);
+}
+
 TYPED_TEST(Validity, BadIndicesAndPointsAreRefused) {
   Polygon_soup s = genmesh::make_tetrahedron();
   s.add_face({0, 1, 9});

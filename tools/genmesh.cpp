@@ -10,8 +10,12 @@
 //   (--backend halfedge|surface-mesh|incidence; check --backend incidence also
 //   names the fins, misoriented edges and bow-ties of a non-manifold input)
 //
-// Exit codes: 0 ok; 1 the mesh is invalid (reported on stdout); 2 bad input or
-// usage (message on stderr). `--json` prints one line per record; `seconds` is
+// Exit codes (docs/cli.md): 0 ok; 1 the input mesh is invalid (info/check
+// report it on stdout, convert/subdivide name the file on stderr); 2 bad
+// input or usage (message on stderr, naming the file and line or byte);
+// 3 refused because it would not fit (subdivide's size prediction, out of
+// memory); 128+N killed by signal N (INT, TERM, HUP remove the output's
+// temporary first). `--json` prints one line per record; `seconds` is
 // the algorithm alone (building the mesh and checking it), file IO excluded.
 #include <genmesh/adaptors/cgal.h>
 #include <genmesh/generators.h>
@@ -26,7 +30,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <charconv>
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -51,6 +57,32 @@ using Incidence_mesh = genmesh::Incidence_mesh<>;
 constexpr int exit_ok = 0;
 constexpr int exit_invalid = 1;
 constexpr int exit_bad_input = 2;
+constexpr int exit_too_large = 3;
+
+// What the program is doing, for an error that would otherwise name no file
+// (out of memory, a library exception): "reading X", "subdividing X", ...
+std::string current_stage;
+struct Stage {
+  std::string saved;
+  explicit Stage(std::string s) : saved(std::exchange(current_stage, std::move(s))) {}
+  ~Stage() { current_stage = std::move(saved); }
+};
+
+// The refusal of work that would not fit (exit 3).
+struct too_large_error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Messages are printed at most this long: a hostile input must not give a
+// megabyte of error text.
+std::string bounded(std::string s, std::size_t max = 2000) {
+  if (s.size() > max) {
+    const std::size_t more = s.size() - max;
+    s.resize(max);
+    s += "... (" + std::to_string(more) + " more characters)";
+  }
+  return s;
+}
 
 struct usage_error : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -72,6 +104,8 @@ const char* usage_text =
     "  --levels N         subdivision levels (default 1)\n"
     "  --boundary B       smooth|fixed border rule (loop, catmull-clark, sqrt3)\n"
     "  --creases FILE     lines 'u v sharpness' (input vertex indices; inf = sharp)\n"
+    "  --max-file-size S  largest input file read (default 8G; suffixes K M G T)\n"
+    "  --max-memory S     subdivide: largest predicted memory (default: half of RAM)\n"
     "formats: OFF, OBJ, PLY (ASCII, binary), STL (ASCII, binary)\n";
 
 struct Args {
@@ -85,7 +119,27 @@ struct Args {
   int levels = 1;
   std::string boundary = "smooth";
   std::string creases;
+  std::uint64_t max_file_size = genmesh::detail::io::default_max_file_size;
+  std::optional<std::uint64_t> max_memory;
 };
+
+// "123", "64K", "1.5G" (powers of 1024) -> bytes; nullopt if malformed.
+std::optional<std::uint64_t> parse_size(const std::string& v) {
+  if (v.empty() || v.size() > 32) return std::nullopt;
+  double x = 0;
+  auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+  if (ec != std::errc() || !(x >= 0) || ptr == v.data()) return std::nullopt;
+  std::string_view unit(ptr, static_cast<std::size_t>(v.data() + v.size() - ptr));
+  double scale = 1;
+  if (unit == "K" || unit == "k") scale = 1024.0;
+  else if (unit == "M") scale = 1024.0 * 1024;
+  else if (unit == "G") scale = 1024.0 * 1024 * 1024;
+  else if (unit == "T") scale = 1024.0 * 1024 * 1024 * 1024;
+  else if (!unit.empty()) return std::nullopt;
+  const double bytes = x * scale;
+  if (!(bytes < 1.8e19)) return std::nullopt;
+  return static_cast<std::uint64_t>(bytes);
+}
 
 Args parse(int argc, char** argv) {
   Args a;
@@ -104,25 +158,30 @@ Args parse(int argc, char** argv) {
         a.backend = s.substr(10);
       }
       if (a.backend != "halfedge" && a.backend != "surface-mesh" && a.backend != "incidence")
-        throw usage_error("unknown backend '" + a.backend + "' (halfedge|surface-mesh|incidence)");
-    } else if (s == "--scheme" || s == "--levels" || s == "--boundary" || s == "--creases") {
+        throw usage_error("unknown backend '" + bounded(a.backend, 40) + "' (halfedge|surface-mesh|incidence)");
+    } else if (s == "--scheme" || s == "--levels" || s == "--boundary" || s == "--creases" ||
+               s == "--max-file-size" || s == "--max-memory") {
       if (i + 1 >= argc) throw usage_error(s + " needs a value");
       const std::string v = argv[++i];
       if (s == "--scheme") a.scheme = v;
       else if (s == "--boundary") a.boundary = v;
-      else if (s == "--creases") a.creases = v;
-      else {
-        std::size_t used = 0;
-        try {
-          a.levels = std::stoi(v, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used != v.size() || a.levels < 0 || a.levels > 12)
-          throw usage_error("--levels takes a whole number from 0 to 12, got '" + v + "'");
+      else if (s == "--creases") {
+        if (v.empty()) throw usage_error("--creases needs a file name, got ''");
+        a.creases = v;
+      } else if (s == "--max-file-size" || s == "--max-memory") {
+        const auto bytes = parse_size(v);
+        if (!bytes) throw usage_error(s + " takes a size such as 500M or 8G, got '" + bounded(v, 40) + "'");
+        if (s == "--max-file-size") a.max_file_size = *bytes;
+        else a.max_memory = *bytes;
+      } else {
+        int levels = -1;
+        auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), levels);
+        if (v.empty() || ec != std::errc() || ptr != v.data() + v.size() || levels < 0 || levels > 12)
+          throw usage_error("--levels takes a whole number from 0 to 12, got '" + bounded(v, 40) + "'");
+        a.levels = levels;
       }
     } else if (s.size() > 1 && s[0] == '-') {
-      throw usage_error("unknown option '" + s + "'");
+      throw usage_error("unknown option '" + bounded(s, 40) + "'");
     } else {
       a.files.push_back(s);
     }
@@ -130,7 +189,7 @@ Args parse(int argc, char** argv) {
   const std::map<std::string, std::size_t> files_needed{
       {"info", 1}, {"check", 1}, {"convert", 2}, {"subdivide", 2}, {"demo", 0}};
   auto it = files_needed.find(a.command);
-  if (it == files_needed.end()) throw usage_error("unknown command '" + a.command + "'");
+  if (it == files_needed.end()) throw usage_error("unknown command '" + bounded(a.command, 40) + "'");
   if (a.files.size() != it->second)
     throw usage_error("'" + a.command + "' takes " + std::to_string(it->second) + " file argument" +
                       (it->second == 1 ? "" : "s") + ", got " + std::to_string(a.files.size()));
@@ -139,10 +198,10 @@ Args parse(int argc, char** argv) {
                                                   "doo-sabin", "butterfly", "midpoint"};
     if (a.scheme.empty()) throw usage_error("subdivide needs --scheme");
     if (std::find(schemes.begin(), schemes.end(), a.scheme) == schemes.end())
-      throw usage_error("unknown scheme '" + a.scheme +
+      throw usage_error("unknown scheme '" + bounded(a.scheme, 40) +
                         "' (loop|catmull-clark|sqrt3|doo-sabin|butterfly|midpoint)");
     if (a.boundary != "smooth" && a.boundary != "fixed")
-      throw usage_error("unknown boundary rule '" + a.boundary + "' (smooth|fixed)");
+      throw usage_error("unknown boundary rule '" + bounded(a.boundary, 40) + "' (smooth|fixed)");
     if (!a.creases.empty() && a.scheme != "loop" && a.scheme != "catmull-clark")
       throw usage_error("--creases applies to loop and catmull-clark only");
   }
@@ -216,6 +275,20 @@ auto with_backend(const std::string& backend, F&& f) {
   return f(m);
 }
 
+// Reads a command's input (the file named in every error, the size bounded).
+genmesh::Polygon_soup read_input(const Args& a, const std::string& file) {
+  Stage stage("reading " + file);
+  return genmesh::read_soup(file, {.max_file_size = a.max_file_size});
+}
+
+// build_mesh() refused the soup (not a 2-manifold, or --repair could not make
+// one): exit 1, naming the file, as info and check do for the same input.
+int report_unbuildable(const std::string& file, const genmesh::invalid_input& e) {
+  std::cerr << "genmesh: " << file << ": not a valid oriented 2-manifold polygon mesh: " << bounded(e.what())
+            << "\n(run 'genmesh check " << file << "' for the full report, or add --repair)\n";
+  return exit_invalid;
+}
+
 // Prints why the soup cannot become a halfedge mesh (exit_invalid).
 int report_refused_soup(const Args& a, const genmesh::Polygon_soup& soup, const genmesh::Soup_report& soup_report,
                         double seconds) {
@@ -231,9 +304,14 @@ int report_refused_soup(const Args& a, const genmesh::Polygon_soup& soup, const 
       // The incidence mesh holds what a halfedge mesh cannot: load the soup
       // as it is and name the fins, misoriented edges and bow-ties.
       Incidence_mesh m;
-      m.load_soup(soup);
-      std::cout << "incidence mesh (" << m.n_vertices() << " vertices, " << m.n_edges() << " edges, "
-                << m.n_faces() << " faces): " << genmesh::to_string(m.manifold_report());
+      try {
+        m.load_soup(soup);
+        std::cout << "incidence mesh (" << m.n_vertices() << " vertices, " << m.n_edges() << " edges, "
+                  << m.n_faces() << " faces): " << genmesh::to_string(m.manifold_report());
+      } catch (const genmesh::invalid_input& e) {
+        // A face that visits a point twice: no incidence matrix holds it.
+        std::cout << "incidence mesh: not loaded: " << bounded(e.what()) << "\n";
+      }
     }
     std::cout << "(run with --repair to fix what can be fixed)\n";
   }
@@ -242,7 +320,8 @@ int report_refused_soup(const Args& a, const genmesh::Polygon_soup& soup, const 
 
 int cmd_info_or_check(const Args& a) {
   const std::string& file = a.files[0];
-  genmesh::Polygon_soup soup = genmesh::read_soup(file);
+  genmesh::Polygon_soup soup = read_input(a, file);
+  Stage stage("checking " + file);
 
   // The soup is checked first (inside build_mesh, on the edge table the
   // build uses): a halfedge mesh cannot hold what a bad soup says.
@@ -253,7 +332,7 @@ int cmd_info_or_check(const Args& a) {
       build = genmesh::build_mesh(soup, mesh, {.repair = a.repair, .throw_on_refusal = false});
     } catch (const genmesh::invalid_input& e) {
       // Repair was asked for and could not make a valid mesh: the input is invalid.
-      std::cout << file << ": " << e.what() << "\n";
+      std::cout << file << ": " << bounded(e.what()) << "\n";
       return exit_invalid;
     }
     if (!build.built) return report_refused_soup(a, soup, build.soup, seconds_since(t0));
@@ -274,17 +353,24 @@ int cmd_info_or_check(const Args& a) {
 }
 
 int cmd_convert(const Args& a) {
-  genmesh::Polygon_soup soup = genmesh::read_soup(a.files[0]);
+  genmesh::Polygon_soup soup = read_input(a, a.files[0]);
   const auto t0 = std::chrono::steady_clock::now();
   return with_backend(a.backend, [&](auto& mesh) {
-    genmesh::Build_report build = genmesh::build_mesh(soup, mesh, {.repair = a.repair});
+    Stage stage("building the mesh of " + a.files[0]);
+    genmesh::Build_report build;
+    try {
+      build = genmesh::build_mesh(soup, mesh, {.repair = a.repair});
+    } catch (const genmesh::invalid_input& e) {
+      return report_unbuildable(a.files[0], e);
+    }
     soup = genmesh::Polygon_soup{}; // the mesh holds it all now
     genmesh::Mesh_report report = genmesh::check_mesh(mesh);
     const double seconds = seconds_since(t0);
     if (!report.ok()) {
-      std::cout << genmesh::to_string(report);
+      std::cout << a.files[0] << ": " << genmesh::to_string(report);
       return exit_invalid;
     }
+    Stage writing("writing " + a.files[1]);
     genmesh::write_mesh(a.files[1], mesh, {.binary = a.binary});
     if (a.json) {
       std::cout << "{\"command\":\"convert\",\"file\":\"" << json_escape(a.files[0])
@@ -302,40 +388,68 @@ int cmd_convert(const Args& a) {
 // ---- subdivide ---------------------------------------------------------------
 
 // Reads a crease file: one "u v sharpness" line per edge, u and v input vertex
-// indices, sharpness a number >= 0 or "inf"; '#' starts a comment. Whether
-// u-v is an edge of the mesh is checked by genmesh::crease_map.
-std::vector<genmesh::Crease> read_creases(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw genmesh::io_error(path, "cannot open crease file");
+// indices, sharpness a number >= 0 or "inf"; '#' starts a comment; LF, CRLF
+// or CR line ends. Every error names the file and the line: malformed
+// numbers, NaN or negative sharpness, u = v, a pair given twice, and (against
+// the input soup) a pair that is not an edge. The file is read as mesh files
+// are: a regular file or pipe of bounded size (a directory or /dev/zero is
+// refused).
+std::vector<genmesh::Crease> read_creases(const std::string& path, const genmesh::Polygon_soup& soup,
+                                          std::uint64_t max_size) {
+  namespace io = genmesh::detail::io;
+  const io::File_content file = io::read_whole_file(path, max_size);
+  io::Text_cursor in(file);
   std::vector<genmesh::Crease> creases;
-  std::string line;
-  for (std::uint64_t n = 1; std::getline(in, line); ++n) {
-    if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
-    std::istringstream ls(line);
-    std::string u_text, v_text, sharpness_text, extra;
-    if (!(ls >> u_text)) continue;  // blank line
-    if (!(ls >> v_text >> sharpness_text) || (ls >> extra))
-      throw genmesh::io_error(path, "expected 'u v sharpness'", n);
-    genmesh::Crease c;
-    try {
-      std::size_t used_u = 0, used_v = 0;
-      const unsigned long u = std::stoul(u_text, &used_u), v = std::stoul(v_text, &used_v);
-      if (used_u != u_text.size() || used_v != v_text.size() || u > UINT32_MAX || v > UINT32_MAX)
-        throw std::invalid_argument("index");
-      c.a = static_cast<std::uint32_t>(u);
-      c.b = static_cast<std::uint32_t>(v);
-    } catch (const std::exception&) {
-      throw genmesh::io_error(path, "malformed vertex index in '" + line + "'", n);
-    }
-    try {
-      std::size_t used = 0;
-      c.sharpness = sharpness_text == "inf" ? INFINITY : std::stod(sharpness_text, &used);
-      if (sharpness_text != "inf" && used != sharpness_text.size()) throw std::invalid_argument("sharpness");
-    } catch (const std::exception&) {
-      throw genmesh::io_error(path, "malformed sharpness '" + sharpness_text + "'", n);
-    }
-    creases.push_back(c);
+  std::vector<std::uint64_t> lines;
+  while (in.next_content_line()) {
+    const std::int64_t u = in.read_int("first vertex index");
+    const std::int64_t v = in.read_int("second vertex index");
+    const double sharpness = in.read_double("sharpness");
+    if (!in.at_eol_or_comment()) in.fail("expected 'u v sharpness', found more: " + io::quote(in.token()));
+    for (std::int64_t x : {u, v})
+      if (x < 0 || x >= static_cast<std::int64_t>(soup.num_points()))
+        in.fail("vertex index " + std::to_string(x) + " out of range (" + std::to_string(soup.num_points()) +
+                " vertices in the input)");
+    if (u == v) in.fail("the two vertex indices are equal (" + std::to_string(u) + ")");
+    if (std::isnan(sharpness) || sharpness < 0)
+      in.fail("the sharpness must be a number >= 0 or inf, not " + std::string(std::isnan(sharpness) ? "NaN" : "negative"));
+    creases.push_back({static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v), sharpness});
+    lines.push_back(in.line());
+    in.next_line();
   }
+  // A pair given twice (either order) is an error, not "the last one wins".
+  const auto key = [](const genmesh::Crease& c) {
+    return (std::uint64_t(std::min(c.a, c.b)) << 32) | std::max(c.a, c.b);
+  };
+  std::vector<std::uint32_t> order(creases.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) {
+    return std::pair(key(creases[x]), x) < std::pair(key(creases[y]), y);
+  });
+  for (std::size_t i = 1; i < order.size(); ++i)
+    if (key(creases[order[i]]) == key(creases[order[i - 1]]))
+      throw genmesh::io_error(path,
+                              "the edge (" + std::to_string(creases[order[i]].a) + ", " +
+                                  std::to_string(creases[order[i]].b) + ") is given twice (first on line " +
+                                  std::to_string(lines[order[i - 1]]) + ")",
+                              lines[order[i]]);
+  // Every pair must be an edge of the input.
+  std::vector<std::uint64_t> edges;
+  if (!creases.empty()) {
+    edges.reserve(soup.indices.size());
+    for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+      const auto c = soup.face(f);
+      for (std::size_t k = 0; k < c.size(); ++k)
+        edges.push_back(key({c[k], c[(k + 1) % c.size()], 0}));
+    }
+    std::sort(edges.begin(), edges.end());
+  }
+  for (std::size_t i = 0; i < creases.size(); ++i)
+    if (!std::binary_search(edges.begin(), edges.end(), key(creases[i])))
+      throw genmesh::io_error(path,
+                              "(" + std::to_string(creases[i].a) + ", " + std::to_string(creases[i].b) +
+                                  ") is not an edge of the input mesh",
+                              lines[i]);
   return creases;
 }
 
@@ -372,18 +486,136 @@ genmesh::Subdivision_result subdivide_all(Mesh& mesh, const Args& a, const Creas
   return genmesh::midpoint_subdivision(mesh, {.iterations = levels}, progress);
 }
 
+// ---- subdivide: will it fit? --------------------------------------------------
+
+// Counts of a mesh at one level: vertices, edges, faces, Σ face degrees
+// (halfedges inside faces), triangles, border edges.
+struct Level_counts {
+  double v = 0, e = 0, f = 0, h = 0, f3 = 0, b = 0;
+};
+
+// The input's counts, from the soup: O(corners · log).
+Level_counts soup_counts(const genmesh::Polygon_soup& soup) {
+  Level_counts c;
+  c.v = static_cast<double>(soup.num_points());
+  c.f = static_cast<double>(soup.num_faces());
+  c.h = static_cast<double>(soup.indices.size());
+  std::vector<std::uint64_t> keys;
+  keys.reserve(soup.indices.size());
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const auto k = soup.face(f);
+    if (k.size() == 3) c.f3 += 1;
+    for (std::size_t i = 0; i < k.size(); ++i) {
+      const std::uint32_t x = k[i], y = k[(i + 1) % k.size()];
+      keys.push_back((std::uint64_t(std::min(x, y)) << 32) | std::max(x, y));
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t i = 0; i < keys.size();) {
+    std::size_t j = i + 1;
+    while (j < keys.size() && keys[j] == keys[i]) ++j;
+    c.e += 1;
+    if (j - i == 1) c.b += 1;
+    i = j;
+  }
+  return c;
+}
+
+// One level of `scheme` (docs/subdivision.md's table): exact on closed
+// meshes for every scheme and on borders for Loop, butterfly, Catmull-Clark
+// and midpoint; √3 counts its border refinement every second level, and
+// Doo-Sabin's closed counts bound its border case from above.
+Level_counts next_level(const Level_counts& c, const std::string& scheme, int level) {
+  Level_counts n;
+  if (scheme == "loop" || scheme == "butterfly") {
+    n = {c.v + c.e, 2 * c.e + 3 * c.f, 4 * c.f, 12 * c.f, 4 * c.f, 2 * c.b};
+  } else if (scheme == "catmull-clark") {
+    n = {c.v + c.e + c.f, 2 * c.e + c.h, c.h, 4 * c.h, 0, 2 * c.b};
+  } else if (scheme == "midpoint") {
+    const double other = c.f - c.f3, other_h = c.h - 3 * c.f3;
+    n = {c.v + c.e + other, 2 * c.e + c.h, 4 * c.f3 + other_h, 12 * c.f3 + 4 * other_h, 4 * c.f3, 2 * c.b};
+  } else if (scheme == "sqrt3") {
+    const bool refine_border = level % 2 == 1;
+    n.f = 3 * c.f + (refine_border ? 2 * c.b : 0);
+    n.b = refine_border ? 3 * c.b : c.b;
+    n.v = c.v + c.f + (refine_border ? c.b : 0);
+    n.e = (3 * n.f + n.b) / 2;
+    n.h = 3 * n.f;
+    n.f3 = n.f;
+  } else { // doo-sabin
+    n = {c.h, 2 * c.h, c.f + c.e + c.v, c.h + 6 * c.e, 0, 0};
+    n.f3 = 0;
+  }
+  return n;
+}
+
+// Peak memory of the last level, with the output soup that writing needs:
+// bytes per element fitted to peak RSS of every scheme on each backend
+// (docs/cli.md "Limits").
+double predicted_bytes(const Level_counts& c, const std::string& backend) {
+  const double per = backend == "incidence" ? 1.65 : 1.0;
+  return per * (110 * c.v + 60 * c.e + 60 * c.f);
+}
+
+std::uint64_t physical_memory() {
+  const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && size > 0 ? std::uint64_t(pages) * std::uint64_t(size) : std::uint64_t{8} << 30;
+}
+
+// Predicts the counts of every level and the memory of the last, and refuses
+// (too_large_error, exit 3) with those figures when they exceed the 32-bit
+// indices of the meshes or the memory limit (--max-memory, default half of
+// the physical memory). O(input) and done before any work starts.
+void check_subdivision_fits(const genmesh::Polygon_soup& soup, const Args& a) {
+  Level_counts c = soup_counts(soup);
+  // A triangle scheme on other faces refuses at once (exit 2, naming the face).
+  if ((a.scheme == "loop" || a.scheme == "butterfly" || a.scheme == "sqrt3") && c.f3 != c.f) return;
+  const std::uint64_t limit = a.max_memory ? *a.max_memory : physical_memory() / 2;
+  std::ostringstream levels;
+  for (int level = 0; level < a.levels; ++level) {
+    c = next_level(c, a.scheme, level);
+    levels << "\n  level " << level + 1 << ": " << std::llround(c.v) << " vertices, " << std::llround(c.e)
+           << " edges, " << std::llround(c.f) << " faces";
+    const double bytes = predicted_bytes(c, a.backend);
+    const bool too_many = 2 * c.e >= 4294967295.0 || c.v >= 4294967295.0 || c.h >= 4294967295.0;
+    if (too_many || bytes > static_cast<double>(limit)) {
+      throw too_large_error(
+          a.files[0] + ": " + a.scheme + " x" + std::to_string(a.levels) + " would not fit: " +
+          (too_many ? std::string("level ") + std::to_string(level + 1) +
+                          " exceeds the 32-bit element indices of the meshes"
+                    : "level " + std::to_string(level + 1) + " needs about " +
+                          genmesh::detail::io::human_bytes(static_cast<std::uint64_t>(bytes)) +
+                          " of memory on the " + a.backend + " backend, over the limit of " +
+                          genmesh::detail::io::human_bytes(limit) +
+                          (a.max_memory ? " (--max-memory)" : " (half of the physical memory; raise it with --max-memory)")) +
+          "; predicted counts:" + levels.str());
+    }
+  }
+}
+
 int cmd_subdivide(const Args& a) {
-  genmesh::Polygon_soup soup = genmesh::read_soup(a.files[0]);
-  const std::vector<genmesh::Crease> creases =
-      a.creases.empty() ? std::vector<genmesh::Crease>{} : read_creases(a.creases);
+  genmesh::Polygon_soup soup = read_input(a, a.files[0]);
+  check_subdivision_fits(soup, a);
+  std::vector<genmesh::Crease> creases;
+  if (!a.creases.empty()) {
+    Stage stage("reading " + a.creases);
+    creases = read_creases(a.creases, soup, a.max_file_size);
+  }
   Subdivide_progress progress;
   progress.scheme = a.scheme.c_str();
   progress.show = !a.json && isatty(STDERR_FILENO);
   return with_backend(a.backend, [&](auto& mesh) {
-    genmesh::build_mesh(soup, mesh, {.repair = a.repair});
+    try {
+      Stage stage("building the mesh of " + a.files[0]);
+      genmesh::build_mesh(soup, mesh, {.repair = a.repair});
+    } catch (const genmesh::invalid_input& e) {
+      return report_unbuildable(a.files[0], e);
+    }
     soup = genmesh::Polygon_soup{}; // the mesh holds it all now
+    Stage stage("subdividing " + a.files[0]);
     genmesh::Subdivision_result result;
     double seconds = 0;
+    try {
     if (creases.empty()) {
       const auto t0 = std::chrono::steady_clock::now();
       result = subdivide_all(mesh, a, genmesh::Default_map{}, progress);
@@ -400,7 +632,12 @@ int cmd_subdivide(const Args& a) {
       result = subdivide_all(mesh, a, crease_map, progress);
       seconds = seconds_since(t0);
     }
+    } catch (const genmesh::invalid_input& e) {
+      // The scheme refused the mesh ("face 4 has 4 sides"): name the file.
+      throw genmesh::io_error(a.files[0], a.scheme + " subdivision refused it: " + bounded(e.what()));
+    }
     genmesh::Mesh_report report = genmesh::check_mesh(mesh);
+    Stage writing("writing " + a.files[1]);
     genmesh::write_mesh(a.files[1], mesh, {.binary = a.binary});
     if (a.json) {
       std::cout << "{\"command\":\"subdivide\",\"file\":\"" << json_escape(a.files[0])
@@ -526,7 +763,34 @@ int cmd_demo(const Args& a) {
 
 } // namespace
 
+// SIGINT, SIGTERM, SIGHUP: remove the output's temporary (an existing output
+// is untouched: it is replaced only by the final rename), then die of the
+// same signal so the caller sees it (exit status 128 + N in a shell).
+extern "C" void on_terminating_signal(int sig) {
+  genmesh::remove_pending_temporaries();
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+void install_signal_handlers() {
+  struct sigaction sa {};
+  sa.sa_handler = on_terminating_signal;
+  sigemptyset(&sa.sa_mask);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction old {};
+    // A signal the caller ignores (nohup, a background job) stays ignored.
+    if (sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;
+    sigaction(sig, &sa, nullptr);
+  }
+}
+
+// "genmesh: <stage>: <message>" for errors that do not name their file.
+std::string in_stage(const std::string& message) {
+  return current_stage.empty() ? message : current_stage + ": " + message;
+}
+
 int main(int argc, char** argv) {
+  install_signal_handlers();
   try {
     Args a = parse(argc, argv);
     if (a.command == "demo") return cmd_demo(a);
@@ -534,16 +798,22 @@ int main(int argc, char** argv) {
     if (a.command == "subdivide") return cmd_subdivide(a);
     return cmd_info_or_check(a);
   } catch (const usage_error& e) {
-    std::cerr << "genmesh: " << e.what() << "\n" << usage_text;
+    std::cerr << "genmesh: " << bounded(e.what()) << "\n" << usage_text;
     return exit_bad_input;
+  } catch (const too_large_error& e) {
+    std::cerr << "genmesh: " << bounded(e.what()) << "\n";
+    return exit_too_large;
   } catch (const genmesh::io_error& e) {
-    std::cerr << "genmesh: " << e.what() << "\n";
+    std::cerr << "genmesh: " << bounded(e.what()) << "\n";
     return exit_bad_input;
   } catch (const genmesh::invalid_input& e) {
-    std::cerr << "genmesh: " << e.what() << "\n";
+    std::cerr << "genmesh: " << bounded(in_stage(e.what())) << "\n";
     return exit_bad_input;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "genmesh: " << bounded(in_stage("out of memory")) << "\n";
+    return exit_too_large;
   } catch (const std::exception& e) {
-    std::cerr << "genmesh: error: " << e.what() << "\n";
+    std::cerr << "genmesh: " << bounded(in_stage(std::string("error: ") + e.what())) << "\n";
     return exit_bad_input;
   }
 }

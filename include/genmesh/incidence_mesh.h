@@ -58,9 +58,10 @@
 //   they would pinch a vertex into two border gaps: see
 //   detail/incidence_operations.h).
 // - next() reads h's turn record, one d1ᵀ column and one d1 column: O(1);
-//   faces of more than 16 sides, and faces edited by
-//   the low-level calls below since the last update_face_orders(), fall back
-//   to scanning d0 rows (O(d) per next).
+//   faces edited by the low-level calls below since the last
+//   update_face_orders() fall back to scanning d0 rows (O(d) per next), and
+//   faces of more than 16 sides to target(h)'s d0ᵀ row (O(degree(target))
+//   per next, so a million-sided face walks in a million steps).
 //   Measured (benchmarks/bench_incidence.cpp, table in docs/benchmarks.md):
 //   next() 6–7× slower than Halfedge_mesh, face(opposite(h)) 3×, around a
 //   face 8–9×, around a vertex 7–9× in cache and 10× on an 89k-triangle mesh
@@ -593,17 +594,21 @@ public:
   /// index out of range.
   void load_soup(const Polygon_soup& soup) {
     const std::size_t np = soup.num_points(), nf = soup.num_faces();
+    // seen[p] = 1 + the last face that visited p: one pass finds a repeated
+    // corner in any face size (a pairwise test is quadratic in it).
+    std::vector<std::uint32_t> seen(np, 0);
     for (std::size_t f = 0; f < nf; ++f) {
       const auto c = soup.face(f);
       if (c.size() < 3) throw invalid_input("Incidence_mesh::load_soup: face " + std::to_string(f) + " has fewer than three corners");
+      const auto stamp = static_cast<std::uint32_t>(f + 1);
       for (std::size_t i = 0; i < c.size(); ++i) {
         if (c[i] >= np)
           throw invalid_input("Incidence_mesh::load_soup: face " + std::to_string(f) + " uses point " +
                               std::to_string(c[i]) + ", out of range");
-        for (std::size_t j = 0; j < i; ++j)
-          if (c[i] == c[j])
-            throw invalid_input("Incidence_mesh::load_soup: face " + std::to_string(f) + " visits point " +
-                                std::to_string(c[i]) + " twice");
+        if (seen[c[i]] == stamp)
+          throw invalid_input("Incidence_mesh::load_soup: face " + std::to_string(f) + " visits point " +
+                              std::to_string(c[i]) + " twice");
+        seen[c[i]] = stamp;
       }
     }
     std::unordered_map<std::uint64_t, std::uint32_t> edge_of;
@@ -1404,6 +1409,7 @@ private:
     const int e = static_cast<int>(h.idx() >> 1);
     const int vi = static_cast<int>(v.idx());
     const int nf = d1_.size(f.idx());
+    if (nf > large_face_ && d0t_.size(v.idx()) < nf) return side_at_large_(f, v, e);
     const int* cf = d1_.cols(f.idx());
     for (int i = 0; i < nf; ++i) {
       const auto c = static_cast<std::uint32_t>(cf[i]);
@@ -1411,6 +1417,24 @@ private:
       const int* d = d0_.cols(c);
       if (d[0] == vi || d[1] == vi)
         return Halfedge_index(2u * c + (d1_.vals(f.idx())[i] > 0 ? 0u : 1u));
+    }
+    throw_cycle_(f.idx(), v.idx());
+  }
+  // side_at_() on a face of more than large_face_ sides: v's edges (d0ᵀ row)
+  // other than e whose d1ᵀ row holds f, the lowest-numbered one (the first
+  // in f's sorted d1 row, as the scan finds it), signed by its d1ᵀ entry.
+  // O(degree(v) · faces per edge), not O(face size): a 1M-sided face costs
+  // what a triangle costs.
+  static constexpr int large_face_ = 16;
+  Halfedge_index side_at_large_(Face_index f, Vertex_index v, int e) const {
+    const int fi = static_cast<int>(f.idx());
+    const int nv = d0t_.size(v.idx());
+    const int* cv = d0t_.cols(v.idx());
+    for (int k = 0; k < nv; ++k) { // sorted by edge: the first hit is the lowest
+      const auto c = static_cast<std::uint32_t>(cv[k]);
+      if (cv[k] == e) continue;
+      const signed char sign = d1t_.at(c, fi);
+      if (sign != 0) return Halfedge_index(2u * c + (sign > 0 ? 0u : 1u));
     }
     throw_cycle_(f.idx(), v.idx());
   }

@@ -58,6 +58,9 @@ struct Read_options {
   File_format format = File_format::automatic;
   /// read_mesh only: passed to build_mesh() (split non-manifold vertices, reorient).
   bool repair = false;
+  /// Largest input accepted, in bytes: a larger regular file is refused
+  /// before it is read, a pipe once it has given more.
+  std::uint64_t max_file_size = detail::io::default_max_file_size;
 };
 
 /// Options of write_soup() and write_mesh().
@@ -84,14 +87,15 @@ inline File_format format_from_extension(const std::filesystem::path& path) {
 
 /// Guesses the format from the content; automatic when nothing fits.
 inline File_format format_from_content(const std::string& d) {
-  if (d.starts_with("ply\n") || d.starts_with("ply\r\n")) return File_format::ply;
+  const std::size_t bom = d.starts_with("\xEF\xBB\xBF") ? 3 : 0;   // UTF-8 byte order mark
+  if (d.compare(bom, 4, "ply\n") == 0 || d.compare(bom, 4, "ply\r") == 0) return File_format::ply;
   if (stl_is_ascii(d)) return File_format::stl;
   // First token of the first line that is not blank or a comment.
-  std::size_t i = 0;
+  std::size_t i = bom;
   for (;;) {
     while (i < d.size() && Text_cursor::is_space_or_newline(d[i])) ++i;
     if (i < d.size() && d[i] == '#') {
-      i = d.find('\n', i);
+      i = d.find_first_of("\r\n", i);
       if (i == std::string::npos) break;
       continue;
     }
@@ -120,19 +124,25 @@ inline File_format format_from_content(const std::string& d) {
 /// coordinates, malformed numbers, binary data in a text format.
 inline Polygon_soup read_soup(const std::filesystem::path& path, const Read_options& options = {}) {
   namespace d = detail::io;
-  const d::File_content file = d::read_whole_file(path);
+  const d::File_content file = d::read_whole_file(path, options.max_file_size);
   File_format format = options.format;
   if (format == File_format::automatic) format = d::format_from_extension(path);
   if (format == File_format::automatic) format = d::format_from_content(file.data);
-  switch (format) {
-    case File_format::off: return d::read_off(file);
-    case File_format::obj: return d::read_obj(file);
-    case File_format::ply: return d::read_ply(file);
-    case File_format::stl: return d::read_stl(file);
-    case File_format::automatic: break;
+  try {
+    switch (format) {
+      case File_format::off: return d::read_off(file);
+      case File_format::obj: return d::read_obj(file);
+      case File_format::ply: return d::read_ply(file);
+      case File_format::stl: return d::read_stl(file);
+      case File_format::automatic: break;
+    }
+  } catch (const std::bad_alloc&) {
+    throw io_error(file.name, "out of memory while parsing the file (" + d::human_bytes(file.data.size()) + ")");
   }
-  throw io_error(file.name, "unknown format: the extension " + d::quote(path.extension().string()) +
-                                " is not .off, .obj, .ply or .stl and the content is none of them");
+  throw io_error(file.name,
+                 "unknown format: the extension " + d::quote(path.extension().string()) +
+                     " is not .off, .obj, .ply or .stl and the content is none of them",
+                 std::nullopt, 0);
 }
 
 /// Writes a polygon soup as OFF, OBJ, PLY (ascii or binary little endian) or
@@ -158,6 +168,16 @@ inline void write_soup(const std::filesystem::path& path, const Polygon_soup& so
     case File_format::automatic: break;
   }
   out.commit();
+}
+
+/// Removes the temporary files of the writes in progress (see write_soup()):
+/// async-signal-safe (unlink() on fixed buffers), for a program's SIGINT,
+/// SIGTERM or SIGHUP handler, which then ends the program. A write whose
+/// temporary is removed so cannot commit: the target stays as it was.
+inline void remove_pending_temporaries() noexcept {
+  auto& p = detail::io::pending_temporaries;
+  for (int i = 0; i < p.slots; ++i)
+    if (p.state[i].load() == p.ready) ::unlink(p.path[i]);
 }
 
 /// Reads a file into the (empty) mesh g: read_soup(), then build_mesh()

@@ -858,23 +858,16 @@ inline Union_find soup_fans(const Polygon_soup& soup, const Soup_edges& e) {
   return uf;
 }
 
-/// Sorted corner set of a face, the key for duplicate detection.
-inline std::vector<Polygon_soup::Index> sorted_corners(const Polygon_soup& soup, std::size_t f) {
-  auto c = soup.face(f);
-  std::vector<Polygon_soup::Index> s(c.begin(), c.end());
-  std::sort(s.begin(), s.end());
-  return s;
-}
-
-/// Faces (among `usable`) whose corner set equals an earlier face's, with that earlier face.
+/// Faces (among `usable`) whose corner set equals an earlier face's, with the
+/// first face of that corner set. O(corners · log): faces are sorted by
+/// (size, an order-independent hash of the corners), and only runs of equal
+/// keys compare their sorted corners — however many faces share an edge.
 inline std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicate_faces(const Polygon_soup& soup,
                                                                              const Soup_edges& e) {
-  // Candidates share their first directed edge's undirected edge; compare within groups.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> dups;
-  std::vector<char> is_dup(soup.num_faces(), 0);
-  // An order-independent hash of each face's corners filters the candidates.
-  std::vector<std::uint64_t> key(soup.num_faces(), 0);
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+  const std::size_t nf = soup.num_faces();
+  std::vector<std::uint64_t> key(nf, 0);
+  std::vector<std::uint32_t> order;
+  for (std::size_t f = 0; f < nf; ++f) {
     if (!e.usable[f]) continue;
     for (auto i : soup.face(f)) {
       std::uint64_t x = i + 0x9e3779b97f4a7c15ull;
@@ -882,28 +875,51 @@ inline std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicate_faces(cons
       x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
       key[f] += x ^ (x >> 31);
     }
+    order.push_back(static_cast<std::uint32_t>(f));
   }
-  for (std::size_t g = 0; g + 1 < e.group_begin.size(); ++g) {
-    std::uint32_t b = e.group_begin[g], end = e.group_begin[g + 1];
-    if (end - b < 2) continue;
-    for (std::uint32_t i = b; i < end; ++i)
-      for (std::uint32_t j = b; j < i; ++j) {
-        std::uint32_t fi = e.halves[i].face, fj = e.halves[j].face;
-        if (fi == fj || is_dup[fi] || fj > fi || key[fi] != key[fj] || soup.face_size(fi) != soup.face_size(fj))
-          continue;
-        if (sorted_corners(soup, fi) == sorted_corners(soup, fj)) {
-          is_dup[fi] = 1;
-          dups.emplace_back(fi, fj);
-        }
+  const auto by_key = [&](std::uint32_t x, std::uint32_t y) {
+    return std::tuple(soup.face_size(x), key[x], x) < std::tuple(soup.face_size(y), key[y], y);
+  };
+  std::sort(order.begin(), order.end(), by_key);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> dups;
+  std::vector<std::vector<Polygon_soup::Index>> sorted;
+  std::vector<std::uint32_t> run;
+  for (std::size_t b = 0; b < order.size();) {
+    std::size_t end = b + 1;
+    while (end < order.size() && key[order[end]] == key[order[b]] &&
+           soup.face_size(order[end]) == soup.face_size(order[b]))
+      ++end;
+    if (end - b > 1) {
+      // Equal keys: group by the sorted corners themselves (a hash collision
+      // costs a sort of the run, never a wrong answer); each group's first
+      // face (lowest index) is the original.
+      sorted.clear();
+      run.clear();
+      for (std::size_t i = b; i < end; ++i) {
+        auto c = soup.face(order[i]);
+        sorted.emplace_back(c.begin(), c.end());
+        std::sort(sorted.back().begin(), sorted.back().end());
+        run.push_back(static_cast<std::uint32_t>(i - b));
       }
+      std::stable_sort(run.begin(), run.end(), [&](std::uint32_t x, std::uint32_t y) { return sorted[x] < sorted[y]; });
+      for (std::size_t i = 1, first = 0; i < run.size(); ++i) {
+        if (sorted[run[i]] != sorted[run[first]]) first = i;
+        else dups.emplace_back(order[b + run[i]], order[b + run[first]]);
+      }
+    }
+    b = end;
   }
   std::sort(dups.begin(), dups.end());
   return dups;
 }
 
-inline std::string list(const std::vector<std::size_t>& v) {
+/// "a, b, c" — at most `max_items` of them, then "... (N more)": a message
+/// stays short however large the face or the fin (the problem's own vectors
+/// keep every index).
+inline std::string list(const std::vector<std::size_t>& v, std::size_t max_items = 10) {
   std::string s;
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + std::to_string(v[i]);
+  for (std::size_t i = 0; i < v.size() && i < max_items; ++i) s += (i ? ", " : "") + std::to_string(v[i]);
+  if (v.size() > max_items) s += ", ... (" + std::to_string(v.size() - max_items) + " more)";
   return s;
 }
 

@@ -9,6 +9,7 @@
 #include <genmesh/polygon_soup.h>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cerrno>
 #include <charconv>
@@ -25,6 +26,10 @@
 #include <system_error>
 #include <type_traits>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 namespace genmesh::detail::io {
 
 /// A file's whole content and its name, as the errors print it.
@@ -33,33 +38,92 @@ struct File_content {
   std::string data;
 };
 
-/// Reads the whole file; throws io_error if it is missing, unreadable or empty.
-inline File_content read_whole_file(const std::filesystem::path& path) {
-  File_content f{path.string(), {}};
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) throw io_error(f.name, "file does not exist");
-  if (std::filesystem::is_directory(status)) throw io_error(f.name, "is a directory, not a file");
-  std::FILE* fp = std::fopen(f.name.c_str(), "rb");
-  if (!fp) throw io_error(f.name, std::string("cannot open file: ") + std::strerror(errno));
-  // One fread of the whole file when its size is known; chunks otherwise
-  // (pipes and other special files).
-  std::string data;
-  if (std::fseek(fp, 0, SEEK_END) == 0) {
-    const long size = std::ftell(fp);
-    std::fseek(fp, 0, SEEK_SET);
-    if (size > 0) {
-      data.resize(static_cast<std::size_t>(size));
-      data.resize(std::fread(data.data(), 1, data.size(), fp));
-    }
+/// The default bound on an input file's size (Read_options::max_file_size):
+/// 8 GiB, far above any mesh file genmesh can hold in memory as a soup on a
+/// usual machine, and low enough that a sparse or endless file is refused at
+/// once rather than after filling the memory.
+inline constexpr std::uint64_t default_max_file_size = std::uint64_t{8} << 30;
+
+/// "12.3 MiB" (powers of 1024, as the CLI's size options) for messages.
+inline std::string human_bytes(std::uint64_t n) {
+  const char* unit[] = {"bytes", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
+  double v = static_cast<double>(n);
+  int u = 0;
+  while (v >= 1024 && u < 6) {
+    v /= 1024;
+    ++u;
   }
-  char chunk[1 << 14];
-  std::size_t n;
-  while ((n = std::fread(chunk, 1, sizeof chunk, fp)) > 0) data.append(chunk, n);
-  const bool failed = std::ferror(fp) != 0;
-  std::fclose(fp);
-  if (failed) throw io_error(f.name, "read error");
-  if (data.empty()) throw io_error(f.name, "file is empty");
+  char b[48];
+  if (u == 0) std::snprintf(b, sizeof b, "%llu bytes", static_cast<unsigned long long>(n));
+  else std::snprintf(b, sizeof b, "%.1f %s", v, unit[u]);
+  return b;
+}
+
+/// Reads the whole file; throws io_error if it is missing, unreadable, empty,
+/// not a regular file, a pipe or socket that gives more than `max_size`
+/// bytes, or a regular file larger than `max_size` (checked before any byte
+/// is read, so a 10 GB sparse file is refused at once). Devices (/dev/zero,
+/// /dev/urandom, a terminal) and directories are refused: they have no end
+/// or no content. Pipes (`genmesh info /dev/stdin < x.off`, process
+/// substitution) are read up to `max_size`.
+inline File_content read_whole_file(const std::filesystem::path& path,
+                                    std::uint64_t max_size = default_max_file_size) {
+  File_content f{path.string(), {}};
+  const auto refuse_special = [&](mode_t mode) {
+    if (S_ISDIR(mode)) throw io_error(f.name, "is a directory, not a file");
+    if (!S_ISREG(mode) && !S_ISFIFO(mode) && !S_ISSOCK(mode))
+      throw io_error(f.name, std::string("is not a regular file (") +
+                                 (S_ISCHR(mode) ? "a character device" : S_ISBLK(mode) ? "a block device" : "a special file") +
+                                 "): genmesh reads regular files, pipes and sockets only");
+  };
+  // Devices are refused before open(), which could block on some of them (a
+  // FIFO's open() waits for its writer, as cat does).
+  struct stat pre {};
+  if (::stat(f.name.c_str(), &pre) == 0) refuse_special(pre.st_mode);
+  const int fd = ::open(f.name.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) {
+    const int err = errno;
+    std::error_code ec;
+    if (err == ENOENT) throw io_error(f.name, "file does not exist");
+    if (std::filesystem::is_directory(path, ec)) throw io_error(f.name, "is a directory, not a file");
+    throw io_error(f.name, std::string("cannot open file: ") + std::strerror(err));
+  }
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) throw io_error(f.name, std::string("cannot stat file: ") + std::strerror(errno));
+  refuse_special(st.st_mode);
+  const bool regular = S_ISREG(st.st_mode);
+  if (regular && static_cast<std::uint64_t>(st.st_size) > max_size)
+    throw io_error(f.name, "the file is " + human_bytes(static_cast<std::uint64_t>(st.st_size)) +
+                               ", larger than the limit of " + human_bytes(max_size) + " for an input file");
+  std::string data;
+  try {
+    if (regular) data.reserve(static_cast<std::size_t>(st.st_size));
+    std::size_t used = 0;
+    for (;;) {
+      if (data.size() - used < (1u << 16))
+        data.resize(std::min<std::uint64_t>(
+            std::max<std::uint64_t>(data.size() + (1u << 16), regular ? static_cast<std::uint64_t>(st.st_size) + 1 : data.size() * 2),
+            max_size + (1u << 16)));
+      const ssize_t n = ::read(fd, data.data() + used, data.size() - used);
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        throw io_error(f.name, std::string("read error: ") + std::strerror(errno), std::nullopt, used);
+      }
+      if (n == 0) break;
+      used += static_cast<std::size_t>(n);
+      if (used > max_size)
+        throw io_error(f.name, "more than " + human_bytes(max_size) +
+                                   " read and no end in sight: larger than the limit for an input file");
+    }
+    data.resize(used);
+  } catch (const std::bad_alloc&) {
+    throw io_error(f.name, "out of memory while reading the file (" + human_bytes(data.size()) + " read)");
+  }
+  if (data.empty()) throw io_error(f.name, "file is empty", std::nullopt, 0);
   f.data = std::move(data);
   return f;
 }
@@ -86,8 +150,10 @@ inline bool is_text_byte(unsigned char c) {
   return c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v' || (c >= 0x20 && c != 0x7f);
 }
 
-/// Cursor over a text buffer. Lines are 1-based; whitespace within a line is
-/// space, tab, \r, \f, \v. Every error it throws names the file and the line.
+/// Cursor over a text buffer. Lines are 1-based and end at LF, CRLF or a
+/// lone CR (all three read the same: old Mac exporters write CR only, and a
+/// stray CR must not glue two statements into one); whitespace within a line
+/// is space, tab, \f, \v. Every error it throws names the file and the line.
 class Text_cursor {
 public:
   /// With `text_only`, a NUL byte anywhere after `start` is reported at once
@@ -98,12 +164,17 @@ public:
         line_(line) {
     if (text_only) check_no_nul(start);
     if (start == 0 && file.data.starts_with("\xEF\xBB\xBF")) p_ += 3;   // UTF-8 byte order mark
+    // LF-only text (the common case) keeps memchr's speed in next_line().
+    has_cr_ = std::memchr(p_, '\r', static_cast<std::size_t>(end_ - p_)) != nullptr;
   }
+
+  /// A line ends here: LF, or CR (alone or before LF).
+  static bool is_newline(char c) noexcept { return c == '\n' || c == '\r'; }
 
   /// Throws io_error at the current line; at the end of a file that ends
   /// with a newline, that is the last line, not the empty one after it.
   [[noreturn]] void fail(const std::string& message) const {
-    const bool after_last = p_ == end_ && line_ > 1 && end_ != file_->data.data() && end_[-1] == '\n';
+    const bool after_last = p_ == end_ && line_ > 1 && end_ != file_->data.data() && is_newline(end_[-1]);
     throw io_error(file_->name, message, after_last ? line_ - 1 : line_);
   }
   std::uint64_t line() const noexcept { return line_; }
@@ -115,14 +186,13 @@ public:
 
   void skip_spaces() noexcept {
     for (;;) {
-      while (p_ != end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r' || *p_ == '\f' || *p_ == '\v'))
-        ++p_;
+      while (p_ != end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\f' || *p_ == '\v')) ++p_;
       if (continuation_ && p_ != end_ && *p_ == '\\') {
         const char* q = p_ + 1;
-        while (q != end_ && (*q == ' ' || *q == '\t' || *q == '\r')) ++q;
-        if (q != end_ && *q == '\n') {
-          p_ = q + 1;
-          ++line_;
+        while (q != end_ && (*q == ' ' || *q == '\t')) ++q;
+        if (q != end_ && is_newline(*q)) {
+          p_ = q;
+          pass_newline();
           continue;
         }
       }
@@ -132,13 +202,18 @@ public:
   /// True at the end of the line (after skipping spaces): newline, end of file.
   bool at_eol() noexcept {
     skip_spaces();
-    return p_ == end_ || *p_ == '\n';
+    return p_ == end_ || is_newline(*p_);
   }
   /// At end of line or at a '#' comment.
   bool at_eol_or_comment() noexcept { return at_eol() || *p_ == '#'; }
 
   /// Moves past the next newline (ignoring whatever is left on this line).
   void next_line() noexcept {
+    if (has_cr_) {
+      while (p_ != end_ && !is_newline(*p_)) ++p_;
+      if (p_ != end_) pass_newline();
+      return;
+    }
     const void* nl = std::memchr(p_, '\n', static_cast<std::size_t>(end_ - p_));
     if (!nl) {
       p_ = end_;
@@ -148,13 +223,20 @@ public:
     ++line_;
   }
 
+  /// At a newline: moves past it (CRLF as one) and counts the line.
+  void pass_newline() noexcept {
+    if (*p_ == '\r' && p_ + 1 != end_ && p_[1] == '\n') ++p_;
+    ++p_;
+    ++line_;
+  }
+
   /// Skips blank lines and lines whose first non-space character is '#'.
   /// Returns false at end of file.
   bool next_content_line() noexcept {
     for (;;) {
       skip_spaces();
       if (p_ == end_) return false;
-      if (*p_ == '\n' || *p_ == '#') {
+      if (is_newline(*p_) || *p_ == '#') {
         next_line();
         continue;
       }
@@ -166,9 +248,8 @@ public:
   void skip_whitespace_and_newlines() noexcept {
     for (;;) {
       skip_spaces();
-      if (p_ != end_ && *p_ == '\n') {
-        ++p_;
-        ++line_;
+      if (p_ != end_ && is_newline(*p_)) {
+        pass_newline();
         continue;
       }
       return;
@@ -186,16 +267,18 @@ public:
   /// Parses a double; `what` names the value in messages ("x coordinate of vertex 3").
   double read_double(const char* what) {
     skip_spaces();
-    if (p_ == end_ || *p_ == '\n') fail(std::string("line ends before ") + what);
-    const char* b = p_;
-    if (*b == '+') ++b;
+    if (p_ == end_ || is_newline(*p_)) fail(std::string("line ends before ") + what);
+    const char* b = skip_plus_();
     double v = 0;
     auto [ptr, ec] = std::from_chars(b, end_, v);
+    // The number must end the token ("1e-400junk" is not a number), also when
+    // it is out of range.
+    if ((ec != std::errc() && ec != std::errc::result_out_of_range) ||
+        (ptr != end_ && !is_space_or_newline(*ptr) && *ptr != '#'))
+      bad_token(what, "a number");
     if (ec == std::errc::result_out_of_range) {
       // Overflow or underflow: report overflow as non-finite, accept underflow as 0.
       v = (std::strtod(std::string(b, static_cast<std::size_t>(ptr - b)).c_str(), nullptr));
-    } else if (ec != std::errc() || (ptr != end_ && !is_space_or_newline(*ptr) && *ptr != '#')) {
-      bad_token(what, "a number");
     }
     p_ = ptr;
     return v;
@@ -205,9 +288,8 @@ public:
   /// "//3" after the number is skipped (OBJ's v/vt/vn corners).
   std::int64_t read_int(const char* what, bool slash_suffix = false) {
     skip_spaces();
-    if (p_ == end_ || *p_ == '\n') fail(std::string("line ends before ") + what);
-    const char* b = p_;
-    if (*b == '+') ++b;
+    if (p_ == end_ || is_newline(*p_)) fail(std::string("line ends before ") + what);
+    const char* b = skip_plus_();
     std::int64_t v = 0;
     auto [ptr, ec] = std::from_chars(b, end_, v);
     if (ec == std::errc() && slash_suffix && ptr != end_ && *ptr == '/') {
@@ -238,6 +320,17 @@ public:
   }
 
 private:
+  // A leading '+' is allowed once, before a digit or a point ("+-1" and "++1"
+  // are not numbers; from_chars alone takes no '+').
+  const char* skip_plus_() {
+    const char* b = p_;
+    if (*b == '+') {
+      ++b;
+      if (b == end_ || *b == '-' || *b == '+') return p_;   // from_chars fails on '+': reported
+    }
+    return b;
+  }
+
   // A NUL byte never occurs in a text file: it is the surest sign of binary
   // data, and checking for it once (memchr runs at memory speed) lets the
   // parsers report it precisely rather than as some odd parse error.
@@ -246,7 +339,9 @@ private:
     const void* z = std::memchr(b, '\0', static_cast<std::size_t>(end_ - b));
     if (!z) return;
     const char* zp = static_cast<const char*>(z);
-    const auto line = line_ + static_cast<std::uint64_t>(std::count(b, zp, '\n'));
+    std::uint64_t line = line_;
+    for (const char* q = b; q != zp; ++q)   // CR, LF and CRLF each end one line
+      line += *q == '\n' ? (q == b || q[-1] != '\r') : *q == '\r';
     throw io_error(file_->name,
                    "binary data where text was expected (NUL byte at byte " +
                        std::to_string(zp - file_->data.data()) + ")",
@@ -258,6 +353,7 @@ private:
   const char* end_;
   std::uint64_t line_;
   bool continuation_ = false;
+  bool has_cr_ = false;
 };
 
 /// Throws unless all three coordinates are finite.
@@ -301,23 +397,83 @@ void store_le(std::string& out, T v) {
 
 // ---- writing ------------------------------------------------------------------
 
+/// The temporaries of the Atomic_files now open, for
+/// remove_pending_temporaries(): fixed slots of fixed-size names whose state
+/// (free, being written, ready) is a lock-free atomic, so that a signal
+/// handler reads only ready names. Constant-initialized: nothing runs at
+/// first use.
+struct Pending_temporaries {
+  static constexpr int slots = 8;
+  static constexpr std::size_t max_path = 4096;
+  enum : int { free_slot = 0, writing = 1, ready = 2 };
+  std::atomic<int> state[slots] = {};
+  char path[slots][max_path] = {};
+
+  /// A slot holding `name`, or -1 if all are taken or the name is too long
+  /// (the temporary is then only removed by the destructor).
+  int claim(const std::string& name) {
+    if (name.size() >= max_path) return -1;
+    for (int i = 0; i < slots; ++i) {
+      int expected = free_slot;
+      if (!state[i].compare_exchange_strong(expected, writing)) continue;
+      std::memcpy(path[i], name.c_str(), name.size() + 1);
+      state[i].store(ready);
+      return i;
+    }
+    return -1;
+  }
+  void release(int i) {
+    if (i >= 0) state[i].store(free_slot);
+  }
+};
+inline Pending_temporaries pending_temporaries;
+static_assert(std::atomic<int>::is_always_lock_free);
+
 /// Writes to a temporary file beside the target and renames it over the
 /// target on commit(); if commit() is never reached (an exception), the
-/// temporary is removed and the target is left as it was.
+/// temporary is removed and the target is left as it was. A program that
+/// wants the temporary gone on SIGINT/SIGTERM/SIGHUP too calls
+/// genmesh::remove_pending_temporaries() from its handler.
+///
+/// What an in-place overwrite would keep is kept: an existing target's
+/// permission bits go to the new file; a symbolic link is written through
+/// (its final target is replaced, the link stays); a target the user could
+/// not overwrite in place (read-only, or in a directory without write
+/// permission) is refused; a target with several hard links is refused
+/// (replacing it by rename would silently split the links, and writing into
+/// it in place would not be atomic).
 class Atomic_file {
 public:
   explicit Atomic_file(const std::filesystem::path& target) : target_(target), name_(target.string()) {
-    const auto dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
     std::error_code ec;
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(target, ec))) {
+      // Through the link, however many hops: the link itself stays.
+      target_ = std::filesystem::weakly_canonical(target, ec);
+      if (ec) throw io_error(name_, "cannot write: cannot resolve the symbolic link: " + ec.message());
+    }
+    const auto dir = target_.has_parent_path() ? target_.parent_path() : std::filesystem::path(".");
     if (!std::filesystem::is_directory(dir, ec))
       throw io_error(name_, "cannot write: directory " + dir.string() + " does not exist");
-    if (std::filesystem::is_directory(target, ec))
-      throw io_error(name_, "cannot write: it is a directory");
+    struct stat st {};
+    const bool exists = ::stat(target_.c_str(), &st) == 0;
+    if (exists) {
+      if (S_ISDIR(st.st_mode)) throw io_error(name_, "cannot write: it is a directory");
+      if (!S_ISREG(st.st_mode))
+        throw io_error(name_, "cannot write: it exists and is not a regular file (a device, pipe or socket)");
+      // Read-only for everyone (0444) is refused even for root, who could
+      // write it: the user marked it so.
+      if ((st.st_mode & 0222) == 0 || ::access(target_.c_str(), W_OK) != 0)
+        throw io_error(name_, "cannot write: the existing file is read-only; genmesh does not replace a file "
+                              "that could not be overwritten in place");
+      if (st.st_nlink > 1)
+        throw io_error(name_, "cannot write: the existing file has " + std::to_string(st.st_nlink) +
+                                  " hard links, which replacing it would split; remove it first or write elsewhere");
+    }
     std::random_device rd;
     for (int attempt = 0; attempt < 16 && !fp_; ++attempt) {
       // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
       std::string temp_name(1, '.');
-      temp_name += target.filename().string();
+      temp_name += target_.filename().string();
       temp_name += ".tmp";
       temp_name += std::to_string(rd() % 1000000);
       temp_ = dir / temp_name;
@@ -328,6 +484,8 @@ public:
     if (!fp_)
       throw io_error(name_, "cannot create a temporary file in " + dir.string() + ": " +
                                 std::strerror(errno));
+    slot_ = pending_temporaries.claim(temp_.string());
+    if (exists) ::fchmod(::fileno(fp_), st.st_mode & 07777);
   }
   Atomic_file(const Atomic_file&) = delete;
   Atomic_file& operator=(const Atomic_file&) = delete;
@@ -337,6 +495,7 @@ public:
       std::error_code ec;
       std::filesystem::remove(temp_, ec);
     }
+    pending_temporaries.release(slot_);
   }
 
   const std::string& name() const noexcept { return name_; }
@@ -362,6 +521,8 @@ public:
     std::filesystem::rename(temp_, target_, ec);
     if (ec) throw io_error(name_, "cannot rename the temporary file over the target: " + ec.message());
     committed_ = true;
+    pending_temporaries.release(slot_);
+    slot_ = -1;
   }
 
 private:
@@ -370,6 +531,7 @@ private:
   std::string name_;
   std::FILE* fp_ = nullptr;
   bool committed_ = false;
+  int slot_ = -1;
 };
 
 /// Appends a double: the shortest round-trip form when precision >= 17,

@@ -62,12 +62,14 @@ inline std::int64_t ply_load_int(const char* p, Ply_type t, bool little) {
 
 struct Ply_property {
   std::string name;
+  std::uint64_t line = 0;   ///< of its header line, for messages
   bool is_list = false;
   Ply_type count_type = Ply_type::uint8;
   Ply_type type = Ply_type::float32;
 };
 struct Ply_element {
   std::string name;
+  std::uint64_t line = 0;   ///< of its header line, for messages
   std::uint64_t count = 0;
   std::vector<Ply_property> properties;
 };
@@ -77,6 +79,7 @@ struct Ply_header {
   std::vector<Ply_element> elements;
   std::size_t body_offset = 0;   ///< first byte after end_header's newline
   std::uint64_t body_line = 0;   ///< line number of the body's first line
+  std::uint64_t end_line = 0;    ///< line number of end_header
 };
 
 inline Ply_header read_ply_header(const File_content& file) {
@@ -89,6 +92,7 @@ inline Ply_header read_ply_header(const File_content& file) {
     if (in.at_end()) in.fail("missing end_header: the file ends inside the PLY header");
     const std::string_view kw = in.token();
     if (kw == "end_header") {
+      h.end_line = in.line();
       in.next_line();
       break;
     }
@@ -106,6 +110,7 @@ inline Ply_header read_ply_header(const File_content& file) {
       have_format = true;
     } else if (kw == "element") {
       Ply_element e;
+      e.line = in.line();
       e.name = std::string(in.token());
       if (e.name.empty()) in.fail("element without a name");
       const std::int64_t n = in.read_int("element count");
@@ -115,6 +120,7 @@ inline Ply_header read_ply_header(const File_content& file) {
     } else if (kw == "property") {
       if (h.elements.empty()) in.fail("property before any element");
       Ply_property p;
+      p.line = in.line();
       auto t = in.token();
       if (t == "list") {
         p.is_list = true;
@@ -151,7 +157,7 @@ inline Polygon_soup read_ply(const File_content& file) {
     if (e.name == "vertex" && !vertex) vertex = &e;
     if (e.name == "face" && !face) face = &e;
   }
-  if (!vertex) throw io_error(file.name, "the PLY header has no vertex element");
+  if (!vertex) throw io_error(file.name, "the PLY header has no vertex element", h.end_line);
   int xyz[3] = {-1, -1, -1};
   for (std::size_t i = 0; i < vertex->properties.size(); ++i) {
     const auto& p = vertex->properties[i];
@@ -161,22 +167,22 @@ inline Polygon_soup read_ply(const File_content& file) {
   for (int k = 0; k < 3; ++k)
     if (xyz[k] < 0)
       throw io_error(file.name, std::string("the PLY vertex element has no scalar '") + "xyz"[k] +
-                                    "' property");
+                                    "' property", vertex->line);
   int corners = -1;
   if (face) {
     for (std::size_t i = 0; i < face->properties.size(); ++i) {
       const auto& p = face->properties[i];
       if ((p.name == "vertex_indices" || p.name == "vertex_index") && corners < 0) {
-        if (!p.is_list) throw io_error(file.name, "the PLY face property '" + p.name + "' is not a list");
+        if (!p.is_list) throw io_error(file.name, "the PLY face property '" + p.name + "' is not a list", p.line);
         if (!ply_is_integer(p.type))
-          throw io_error(file.name, "the PLY face property '" + p.name + "' has a non-integer index type");
+          throw io_error(file.name, "the PLY face property '" + p.name + "' has a non-integer index type", p.line);
         corners = static_cast<int>(i);
       }
     }
-    if (corners < 0) throw io_error(file.name, "the PLY face element has no vertex_indices list");
+    if (corners < 0) throw io_error(file.name, "the PLY face element has no vertex_indices list", face->line);
   }
   if (vertex->count > std::numeric_limits<Polygon_soup::Index>::max())
-    throw io_error(file.name, "too many vertices: " + std::to_string(vertex->count));
+    throw io_error(file.name, "too many vertices: " + std::to_string(vertex->count), vertex->line);
 
   Polygon_soup soup;
   const auto cap = file.data.size() / 2 + 1;
@@ -194,6 +200,9 @@ inline Polygon_soup read_ply(const File_content& file) {
   if (h.format == Ply_header::Format::ascii) {
     Text_cursor in(file, h.body_offset, h.body_line);
     for (const auto& e : h.elements) {
+      // An element without properties has no data, whatever its count:
+      // looping over the count would do nothing for up to 2^63 rounds.
+      if (e.properties.empty()) continue;
       const bool is_vertex = &e == vertex, is_face = &e == face;
       for (std::uint64_t i = 0; i < e.count; ++i) {
         Eigen::Vector3d p(0, 0, 0);

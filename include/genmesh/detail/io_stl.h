@@ -56,10 +56,10 @@ private:
 
 /// True if the content is ASCII STL (see the header comment).
 inline bool stl_is_ascii(const std::string& data) {
-  std::size_t i = 0;
+  std::size_t i = data.starts_with("\xEF\xBB\xBF") ? 3 : 0;   // UTF-8 byte order mark
   while (i < data.size() && Text_cursor::is_space_or_newline(data[i])) ++i;
   if (data.compare(i, 5, "solid") != 0) return false;
-  const auto nl = data.find('\n', i);
+  const auto nl = data.find_first_of("\r\n", i);
   if (nl == std::string::npos) return data.size() < 84;   // "solid name" alone: an empty ASCII STL
   i = nl + 1;
   while (i < data.size() && Text_cursor::is_space_or_newline(data[i])) ++i;
