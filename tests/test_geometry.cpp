@@ -3,6 +3,7 @@
 // against CGAL's PMP functions on real meshes and against hand-made cases.
 #include "backends.h"
 
+#include <genmesh/aabb_tree.h>
 #include <genmesh/features.h>
 #include <genmesh/geometry.h>
 #include <genmesh/io.h>
@@ -336,7 +337,7 @@ TEST(TriangleIntersection, EqualsCgalOnDegenerateRichInput) {
 //    \ /
 //     d
 TEST(TriangleIntersection, SharedCornersKnown) {
-  using T = genmesh::Mesh_triangle;
+  using T = genmesh::Mesh_triangle<>;
   const Vector3d a(0, 0, 0), b(1, 0, 0), c(0.5, 1, 0), d(0.5, -1, 0), e(2, 0, 0);
   // Shared edge ab, folded apart (c above, d below): no.
   EXPECT_FALSE(genmesh::faces_intersect(T{{a, b, c}, {0, 1, 2}}, T{{b, a, d}, {1, 0, 3}}));
@@ -356,6 +357,151 @@ TEST(TriangleIntersection, SharedCornersKnown) {
   // Disjoint.
   EXPECT_FALSE(genmesh::faces_intersect(T{{a, b, c}, {0, 1, 2}},
                                         T{{Vector3d(0, 0, 1), Vector3d(1, 0, 1), Vector3d(0, 1, 1)}, {3, 4, 5}}));
+}
+
+// ---------------------------------------------------------------------------
+// Aabb_tree against brute force
+// ---------------------------------------------------------------------------
+
+template <class G>
+struct Brute_triangle {
+  std::array<Vector3d, 3> p;
+  genmesh::face_descriptor_t<G> f;
+};
+
+// Every face's fan from its lowest-index corner (the tree's triangulation).
+template <class G>
+std::vector<Brute_triangle<G>> brute_triangles(const G& g) {
+  std::vector<Brute_triangle<G>> out;
+  for (const auto f : faces(g)) {
+    const auto h0 = genmesh::detail::geom::canonical_halfedge(f, g);
+    std::vector<Vector3d> c;
+    auto h = h0;
+    do {
+      c.push_back(genmesh::point(target(h, g), g));
+      h = next(h, g);
+    } while (h != h0);
+    for (std::size_t i = 1; i + 1 < c.size(); ++i) out.push_back({{c[0], c[i], c[i + 1]}, f});
+  }
+  return out;
+}
+
+template <class G>
+class Spatial_index : public ::testing::Test {};
+TYPED_TEST_SUITE(Spatial_index, Backends);
+
+TYPED_TEST(Spatial_index, ClosestPointEqualsBruteForce) {
+  for (const char* name : {"elephant.off", "cube_quad.off", "elephant-with-holes.off"}) {
+    SCOPED_TRACE(name);
+    const auto g = mesh_of<TypeParam>(soup_of(name));
+    const genmesh::Aabb_tree<TypeParam> tree(g);
+    const auto tris = brute_triangles(g);
+    ASSERT_EQ(tree.size(), tris.size());
+    const Eigen::AlignedBox3d box = genmesh::bounding_box(g);
+    const double diag = genmesh::diagonal(g);
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-0.2, 1.2);
+    for (int it = 0; it < 1000; ++it) {
+      Vector3d q;
+      for (int k = 0; k < 3; ++k) q[k] = box.min()[k] + u(rng) * box.sizes()[k];
+      if (it % 2) {  // near the surface: a vertex plus a small offset
+        const auto& t = tris[rng() % tris.size()];
+        q = t.p[0] + 0.01 * diag * Vector3d(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5);
+      }
+      double best = std::numeric_limits<double>::infinity();
+      Vector3d best_p;
+      for (const auto& t : tris) {
+        const auto c = genmesh::closest_point_on_triangle(q, t.p[0], t.p[1], t.p[2]);
+        const double d = (c.point - q).squaredNorm();
+        if (d < best) best = d, best_p = c.point;
+      }
+      const auto r = tree.closest_point(q);
+      ASSERT_NEAR(std::sqrt(r.squared_distance), std::sqrt(best), 1e-12 * diag) << it;
+      ASSERT_LT((r.point - best_p).norm(), 1e-12 * diag) << it;
+      // The face and barycentric coordinates give the point back.
+      Vector3d rebuilt = Vector3d::Zero();
+      for (int k = 0; k < 3; ++k) rebuilt += r.barycentric[k] * genmesh::point(r.corners[k], g);
+      ASSERT_LT((rebuilt - r.point).norm(), 1e-12 * diag);
+      ASSERT_GE(r.barycentric.minCoeff(), -1e-15);
+      bool corner_on_face = false;
+      for (const auto h : halfedges(g))
+        if (face(h, g) == r.face && target(h, g) == r.corners[0]) corner_on_face = true;
+      ASSERT_TRUE(corner_on_face);
+    }
+  }
+}
+
+TYPED_TEST(Spatial_index, RayBoxAndTriangleQueriesEqualBruteForce) {
+  const auto g = mesh_of<TypeParam>(soup_of("elephant.off"));
+  const genmesh::Aabb_tree<TypeParam> tree(g);
+  const auto tris = brute_triangles(g);
+  const Eigen::AlignedBox3d box = genmesh::bounding_box(g);
+  const double diag = genmesh::diagonal(g);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  auto random_point = [&](double pad) {
+    Vector3d q;
+    for (int k = 0; k < 3; ++k) q[k] = box.min()[k] - pad * box.sizes()[k] + u(rng) * (1 + 2 * pad) * box.sizes()[k];
+    return q;
+  };
+  std::size_t hits = 0;
+  for (int it = 0; it < 300; ++it) {
+    const Vector3d o = random_point(0.5), d = random_point(0) - o;
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& t : tris) {
+      // Möller–Trumbore, as the tree does.
+      const Vector3d e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0], pv = d.cross(e2);
+      const double det = e1.dot(pv);
+      if (det == 0) continue;
+      const Vector3d tv = o - t.p[0], qv = tv.cross(e1);
+      const double a = tv.dot(pv) / det, b = d.dot(qv) / det, tt = e2.dot(qv) / det;
+      if (a >= 0 && a <= 1 && b >= 0 && a + b <= 1 && tt >= 0) best = std::min(best, tt);
+    }
+    const auto hit = tree.first_hit(o, d);
+    ASSERT_EQ(hit.has_value(), std::isfinite(best)) << it;
+    if (hit) {
+      ++hits;
+      EXPECT_NEAR(hit->t, best, 1e-9 * best);
+      EXPECT_LT((hit->point - (o + best * d)).norm(), 1e-12 * diag * 10);
+    }
+    // Box query and exact triangle query.
+    const Vector3d c = random_point(0);
+    const Eigen::AlignedBox3d qb(c - 0.05 * box.sizes(), c + 0.05 * box.sizes());
+    std::set<genmesh::face_descriptor_t<TypeParam>> in_box, crossing;
+    const Vector3d a = c, b = random_point(0), cc = c + 0.1 * (random_point(0) - c);
+    for (const auto& t : tris) {
+      Eigen::AlignedBox3d tb(t.p[0]);
+      tb.extend(t.p[1]);
+      tb.extend(t.p[2]);
+      if (tb.intersects(qb)) in_box.insert(t.f);
+      if (genmesh::triangles_intersect(a, b, cc, t.p[0], t.p[1], t.p[2])) crossing.insert(t.f);
+    }
+    const auto fb = tree.faces_in_box(qb);
+    EXPECT_EQ(std::set(fb.begin(), fb.end()), in_box);
+    const auto fc = tree.faces_intersecting(a, b, cc);
+    EXPECT_EQ(std::set(fc.begin(), fc.end()), crossing);
+    EXPECT_EQ(tree.intersects(a, b, cc), !crossing.empty());
+  }
+  EXPECT_GT(hits, 50u);
+}
+
+TYPED_TEST(Spatial_index, EmptyAndNonFinite) {
+  const TypeParam empty;
+  const genmesh::Aabb_tree<TypeParam> t0(empty);
+  EXPECT_TRUE(t0.empty());
+  EXPECT_EQ(t0.squared_distance(Vector3d(1, 2, 3)), std::numeric_limits<double>::infinity());
+  EXPECT_FALSE(t0.first_hit(Vector3d(0, 0, 0), Vector3d(1, 0, 0)).has_value());
+  EXPECT_TRUE(t0.faces_in_box(Eigen::AlignedBox3d(Vector3d(-1, -1, -1), Vector3d(1, 1, 1))).empty());
+
+  auto g = mesh_of<TypeParam>(soup_of("elephant.off"));
+  std::size_t nf = 0;
+  for (const auto f : faces(g)) (void)f, ++nf;
+  const auto v0 = *vertices(g).begin();
+  put(get(genmesh::vertex_point, g), v0, genmesh::from_eigen<genmesh::point_t<TypeParam>>(Vector3d(std::nan(""), 0, 0)));
+  const genmesh::Aabb_tree<TypeParam> t1(g);
+  EXPECT_GT(t1.skipped_faces(), 0u);
+  EXPECT_EQ(t1.size() + t1.skipped_faces(), nf);
+  EXPECT_TRUE(std::isfinite(t1.closest_point(Vector3d(0, 0, 0)).squared_distance));
 }
 
 } // namespace

@@ -29,14 +29,14 @@
 
 namespace genmesh {
 
-/// Is h or opposite(h) a border halfedge?
+namespace detail::features {
+
+// Is h or opposite(h) a border halfedge?
 template <FaceGraph G>
-bool is_border_edge(halfedge_descriptor_t<G> h, const G& g) {
+bool border_edge(halfedge_descriptor_t<G> h, const G& g) {
   const auto null = boost::graph_traits<G>::null_face();
   return face(h, g) == null || face(opposite(h, g), g) == null;
 }
-
-namespace detail::features {
 
 // CGAL's internal::is_sharp: n1·n2 ≤ cos(angle)·|n1||n2| without roots.
 template <FaceGraph G, class PointMap>
@@ -68,79 +68,87 @@ bool is_sharp(halfedge_descriptor_t<G> h, const G& g, PointMap pm, double cos_an
 
 } // namespace detail::features
 
-/// Marks edge e in is_feature (a writable boolean edge property map) when
-/// it is a border edge or its dihedral angle (between face normals) is at
-/// least angle_deg degrees; writes false on every other edge. Same edges as
-/// CGAL's PMP::detect_sharp_edges on triangle meshes.
-template <class G, class EdgeMap, class PointMap>
-  requires FaceGraph<G> && EdgeListGraph<G>
-void detect_sharp_edges(const G& g, double angle_deg, EdgeMap is_feature, PointMap pm) {
-  const double cos_angle = std::cos(angle_deg * std::numbers::pi / 180.0);
-  for (const auto e : edges(g)) {
-    const auto h = halfedge(e, g);
-    const bool sharp = is_border_edge(h, g) || angle_deg == 0 ||
-                       (angle_deg != 180 && detail::features::is_sharp(h, g, pm, cos_angle));
-    put(is_feature, e, sharp);
-  }
-}
-template <class G, class EdgeMap>
-  requires FaceGraph<G> && EdgeListGraph<G>
-void detect_sharp_edges(const G& g, double angle_deg, EdgeMap is_feature) {
-  detect_sharp_edges(g, angle_deg, is_feature, get(vertex_point, g));
-}
+// The functions below are function objects (see geometry.h): CGAL's
+// unqualified detect_sharp_edges(...) calls on genmesh meshes stay CGAL's.
 
-/// The boolean edge map detect_sharp_edges fills, indexed through g's edge index map.
+/// detect_sharp_edges(g, angle_deg, is_feature[, pm]): writes, for every
+/// edge e, into the writable boolean edge map is_feature whether e is a
+/// border edge or its faces' normals make an angle of at least angle_deg
+/// degrees. Same edges as CGAL's PMP::detect_sharp_edges on triangle meshes.
+inline constexpr struct Detect_sharp_edges_fn {
+  template <class G, class EdgeMap, PointMapOf<G> PointMap>
+    requires FaceGraph<G> && EdgeListGraph<G>
+  void operator()(const G& g, double angle_deg, EdgeMap is_feature, const PointMap& pm) const {
+    const double cos_angle = std::cos(angle_deg * std::numbers::pi / 180.0);
+    for (const auto e : edges(g)) {
+      const auto h = halfedge(e, g);
+      const bool sharp = detail::features::border_edge(h, g) || angle_deg == 0 ||
+                         (angle_deg != 180 && detail::features::is_sharp(h, g, pm, cos_angle));
+      put(is_feature, e, sharp);
+    }
+  }
+  template <class G, class EdgeMap>
+    requires FaceGraph<G> && EdgeListGraph<G>
+  void operator()(const G& g, double angle_deg, EdgeMap is_feature) const {
+    (*this)(g, angle_deg, is_feature, get(vertex_point, g));
+  }
+} detect_sharp_edges{};
+
+/// The boolean edge map sharp_edges() fills, indexed through g's edge index map.
 template <class G>
 using Edge_flag_map = boost::vector_property_map<bool, decltype(get(edge_index, std::declval<const G&>()))>;
 
-/// detect_sharp_edges into a new edge map of bool (true = feature edge).
-template <class G>
-  requires FaceGraph<G> && EdgeListGraph<G> && HasIndexMap<G, edge_index_t>
-Edge_flag_map<G> sharp_edges(const G& g, double angle_deg) {
-  Edge_flag_map<G> m(static_cast<unsigned>(index_bound(edge_index, g)), get(edge_index, g));
-  detect_sharp_edges(g, angle_deg, m);
-  return m;
-}
+/// sharp_edges(g, angle_deg): detect_sharp_edges into a new edge map of bool.
+inline constexpr struct Sharp_edges_fn {
+  template <class G>
+    requires FaceGraph<G> && EdgeListGraph<G> && HasIndexMap<G, edge_index_t>
+  Edge_flag_map<G> operator()(const G& g, double angle_deg) const {
+    Edge_flag_map<G> m(static_cast<unsigned>(index_bound(edge_index, g)), get(edge_index, g));
+    detect_sharp_edges(g, angle_deg, m);
+    return m;
+  }
+} sharp_edges{};
 
 /// What the feature edges make of a vertex (see the header comment).
 enum class Vertex_kind : std::uint8_t { interior, border, feature, corner };
 
-/// The number of feature edges at v, border edges counted as features.
+namespace detail::features {
+// (feature edges that are not border edges, border edges) around v.
 template <FaceGraph G, class EdgeMap>
-int feature_degree(vertex_descriptor_t<G> v, const G& g, const EdgeMap& is_feature) {
+std::pair<int, int> count_around(vertex_descriptor_t<G> v, const G& g, const EdgeMap& is_feature) {
   const auto h0 = halfedge(v, g);
-  if (h0 == boost::graph_traits<G>::null_halfedge()) return 0;
-  int n = 0;
-  auto h = h0;
-  do {
-    if (is_border_edge(h, g) || get(is_feature, edge(h, g))) ++n;
-    h = opposite(next(h, g), g);
-  } while (h != h0);
-  return n;
-}
-
-/// Classifies v by the feature edges around it (see the header comment).
-template <FaceGraph G, class EdgeMap>
-Vertex_kind classify_vertex(vertex_descriptor_t<G> v, const G& g, const EdgeMap& is_feature) {
-  const auto h0 = halfedge(v, g);
-  if (h0 == boost::graph_traits<G>::null_halfedge()) return Vertex_kind::interior;
+  if (h0 == boost::graph_traits<G>::null_halfedge()) return {0, 0};
   int features = 0, border = 0;
   auto h = h0;
   do {
-    if (is_border_edge(h, g)) ++border;
+    if (border_edge(h, g)) ++border;
     else if (get(is_feature, edge(h, g))) ++features;
     h = opposite(next(h, g), g);
   } while (h != h0);
-  const int n = features + border;
-  if (n == 0) return Vertex_kind::interior;
-  if (n == 2) return features == 0 ? Vertex_kind::border : Vertex_kind::feature;
-  return Vertex_kind::corner;
+  return {features, border};
 }
+} // namespace detail::features
 
-/// Is v a corner (see the header comment)?
-template <FaceGraph G, class EdgeMap>
-bool is_corner(vertex_descriptor_t<G> v, const G& g, const EdgeMap& is_feature) {
-  return classify_vertex(v, g, is_feature) == Vertex_kind::corner;
-}
+/// feature_degree(v, g, is_feature): the number of feature edges at v,
+/// border edges counted as features.
+inline constexpr struct Feature_degree_fn {
+  template <FaceGraph G, class EdgeMap>
+  int operator()(vertex_descriptor_t<G> v, const G& g, const EdgeMap& is_feature) const {
+    const auto [f, b] = detail::features::count_around(v, g, is_feature);
+    return f + b;
+  }
+} feature_degree{};
+
+/// classify_vertex(v, g, is_feature): v's Vertex_kind (see the header comment).
+inline constexpr struct Classify_vertex_fn {
+  template <FaceGraph G, class EdgeMap>
+  Vertex_kind operator()(vertex_descriptor_t<G> v, const G& g, const EdgeMap& is_feature) const {
+    const auto [f, b] = detail::features::count_around(v, g, is_feature);
+    const int n = f + b;
+    if (n == 0) return Vertex_kind::interior;
+    if (n == 2) return f == 0 ? Vertex_kind::border : Vertex_kind::feature;
+    return Vertex_kind::corner;
+  }
+} classify_vertex{};
 
 } // namespace genmesh

@@ -44,9 +44,6 @@ namespace genmesh {
 
 namespace detail::geom {
 
-template <class G>
-using default_point_map = decltype(get(vertex_point, std::declval<const G&>()));
-
 // The halfedge of f whose target has the lowest vertex index (halfedge(f, g)
 // when g has no vertex index map), so that per-face sums do not depend on
 // where a backend starts a face.
@@ -70,243 +67,280 @@ halfedge_descriptor_t<G> canonical_halfedge(face_descriptor_t<G> f, const G& g) 
 
 } // namespace detail::geom
 
-/// The position of v as Eigen::Vector3d.
-template <HalfedgeGraph G, class PointMap = detail::geom::default_point_map<G>>
-Eigen::Vector3d point(vertex_descriptor_t<G> v, const G& g, PointMap pm) {
-  using P = typename boost::property_traits<PointMap>::value_type;
-  return to_eigen(P(get(pm, v)));
-}
-template <HalfedgeGraph G>
-Eigen::Vector3d point(vertex_descriptor_t<G> v, const G& g) {
-  return point(v, g, get(vertex_point, g));
-}
+// Every function below is a function object (as the local operations are),
+// so argument-dependent lookup never finds it: CGAL's unqualified calls such
+// as edge_length(h, g, np) on a genmesh mesh stay CGAL's.
 
-/// twice the vector area of f (see the header comment); zero for a degenerate face.
-template <FaceGraph G, class PointMap = detail::geom::default_point_map<G>>
-Eigen::Vector3d face_normal(face_descriptor_t<G> f, const G& g, PointMap pm) {
-  const auto h0 = detail::geom::canonical_halfedge(f, g);
-  const Eigen::Vector3d p0 = point(target(h0, g), g, pm);
-  auto h = next(h0, g);
-  Eigen::Vector3d prev = point(target(h, g), g, pm) - p0;
-  Eigen::Vector3d n = Eigen::Vector3d::Zero();
-  for (h = next(h, g); h != h0; h = next(h, g)) {
-    const Eigen::Vector3d cur = point(target(h, g), g, pm) - p0;
-    n += prev.cross(cur);
-    prev = cur;
+/// A readable vertex point map of G.
+template <class M, class G>
+concept PointMapOf = requires(const M& m, vertex_descriptor_t<G> v) {
+  { to_eigen(typename boost::property_traits<M>::value_type(get(m, v))) };
+};
+
+/// point(v, g[, pm]): the position of v as Eigen::Vector3d.
+inline constexpr struct Point_fn {
+  template <HalfedgeGraph G, PointMapOf<G> PointMap>
+  Eigen::Vector3d operator()(vertex_descriptor_t<G> v, const G&, const PointMap& pm) const {
+    using P = typename boost::property_traits<PointMap>::value_type;
+    return to_eigen(P(get(pm, v)));
   }
-  return n;
-}
-template <FaceGraph G>
-Eigen::Vector3d face_normal(face_descriptor_t<G> f, const G& g) {
-  return face_normal(f, g, get(vertex_point, g));
-}
+  template <HalfedgeGraph G>
+  Eigen::Vector3d operator()(vertex_descriptor_t<G> v, const G& g) const {
+    return (*this)(v, g, get(vertex_point, g));
+  }
+} point{};
 
-/// face_normal(f) normalized; zero for a degenerate face.
-template <FaceGraph G, class PointMap = detail::geom::default_point_map<G>>
-Eigen::Vector3d unit_face_normal(face_descriptor_t<G> f, const G& g, PointMap pm) {
-  const Eigen::Vector3d n = face_normal(f, g, pm);
-  const double l = n.norm();
-  return l > 0 ? Eigen::Vector3d(n / l) : Eigen::Vector3d::Zero();
-}
-template <FaceGraph G>
-Eigen::Vector3d unit_face_normal(face_descriptor_t<G> f, const G& g) {
-  return unit_face_normal(f, g, get(vertex_point, g));
-}
+/// face_normal(f, g[, pm]): twice the vector area of f (see the header
+/// comment); zero for a degenerate face.
+inline constexpr struct Face_normal_fn {
+  template <FaceGraph G, PointMapOf<G> PointMap>
+  Eigen::Vector3d operator()(face_descriptor_t<G> f, const G& g, const PointMap& pm) const {
+    const auto h0 = detail::geom::canonical_halfedge(f, g);
+    const Eigen::Vector3d p0 = point(target(h0, g), g, pm);
+    auto h = next(h0, g);
+    Eigen::Vector3d prev = point(target(h, g), g, pm) - p0;
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    for (h = next(h, g); h != h0; h = next(h, g)) {
+      const Eigen::Vector3d cur = point(target(h, g), g, pm) - p0;
+      n += prev.cross(cur);
+      prev = cur;
+    }
+    return n;
+  }
+  template <FaceGraph G>
+  Eigen::Vector3d operator()(face_descriptor_t<G> f, const G& g) const {
+    return (*this)(f, g, get(vertex_point, g));
+  }
+} face_normal{};
 
-/// The area of f (|face_normal(f)| / 2: exact for triangles and planar polygons).
-template <FaceGraph G, class PointMap = detail::geom::default_point_map<G>>
-double face_area(face_descriptor_t<G> f, const G& g, PointMap pm) {
-  return 0.5 * face_normal(f, g, pm).norm();
-}
-template <FaceGraph G>
-double face_area(face_descriptor_t<G> f, const G& g) {
-  return face_area(f, g, get(vertex_point, g));
-}
+/// unit_face_normal(f, g[, pm]): face_normal normalized; zero for a degenerate face.
+inline constexpr struct Unit_face_normal_fn {
+  template <FaceGraph G, PointMapOf<G> PointMap>
+  Eigen::Vector3d operator()(face_descriptor_t<G> f, const G& g, const PointMap& pm) const {
+    const Eigen::Vector3d n = face_normal(f, g, pm);
+    const double l = n.norm();
+    return l > 0 ? Eigen::Vector3d(n / l) : Eigen::Vector3d::Zero();
+  }
+  template <FaceGraph G>
+  Eigen::Vector3d operator()(face_descriptor_t<G> f, const G& g) const {
+    return (*this)(f, g, get(vertex_point, g));
+  }
+} unit_face_normal{};
 
-/// The mean of f's corners.
-template <FaceGraph G, class PointMap = detail::geom::default_point_map<G>>
-Eigen::Vector3d face_centroid(face_descriptor_t<G> f, const G& g, PointMap pm) {
-  const auto h0 = detail::geom::canonical_halfedge(f, g);
-  Eigen::Vector3d c = Eigen::Vector3d::Zero();
-  int n = 0;
-  auto h = h0;
-  do {
-    c += point(target(h, g), g, pm);
-    ++n;
-    h = next(h, g);
-  } while (h != h0);
-  return c / n;
-}
-template <FaceGraph G>
-Eigen::Vector3d face_centroid(face_descriptor_t<G> f, const G& g) {
-  return face_centroid(f, g, get(vertex_point, g));
-}
+/// face_area(f, g[, pm]): |face_normal| / 2 (exact for triangles and planar polygons).
+inline constexpr struct Face_area_fn {
+  template <FaceGraph G, PointMapOf<G> PointMap>
+  double operator()(face_descriptor_t<G> f, const G& g, const PointMap& pm) const {
+    return 0.5 * face_normal(f, g, pm).norm();
+  }
+  template <FaceGraph G>
+  double operator()(face_descriptor_t<G> f, const G& g) const {
+    return (*this)(f, g, get(vertex_point, g));
+  }
+} face_area{};
+
+/// face_centroid(f, g[, pm]): the mean of f's corners.
+inline constexpr struct Face_centroid_fn {
+  template <FaceGraph G, PointMapOf<G> PointMap>
+  Eigen::Vector3d operator()(face_descriptor_t<G> f, const G& g, const PointMap& pm) const {
+    const auto h0 = detail::geom::canonical_halfedge(f, g);
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    int n = 0;
+    auto h = h0;
+    do {
+      c += point(target(h, g), g, pm);
+      ++n;
+      h = next(h, g);
+    } while (h != h0);
+    return c / n;
+  }
+  template <FaceGraph G>
+  Eigen::Vector3d operator()(face_descriptor_t<G> f, const G& g) const {
+    return (*this)(f, g, get(vertex_point, g));
+  }
+} face_centroid{};
 
 /// The angle between the vectors a and b, in [0, π] (0 if either is zero).
 inline double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
-/// The angle of face(h) at target(h), between the sides to source(h) and to
-/// target(next(h)), in radians. h must not be a border halfedge (on a border
-/// halfedge it is the angle between the same two sides).
-template <FaceGraph G, class PointMap = detail::geom::default_point_map<G>>
-double corner_angle(halfedge_descriptor_t<G> h, const G& g, PointMap pm) {
-  const Eigen::Vector3d p = point(target(h, g), g, pm);
-  return angle_between(point(source(h, g), g, pm) - p, point(target(next(h, g), g), g, pm) - p);
-}
-template <FaceGraph G>
-double corner_angle(halfedge_descriptor_t<G> h, const G& g) {
-  return corner_angle(h, g, get(vertex_point, g));
-}
-
-/// The signed bend of the surface across edge(h), in radians: 0 where
-/// face(h) and face(opposite(h)) are coplanar, positive at a convex edge,
-/// negative at a concave one; 0 on a border edge or next to a degenerate face.
-template <FaceGraph G, class PointMap = detail::geom::default_point_map<G>>
-double dihedral_angle(halfedge_descriptor_t<G> h, const G& g, PointMap pm) {
-  const auto null = boost::graph_traits<G>::null_face();
-  const auto f1 = face(h, g), f2 = face(opposite(h, g), g);
-  if (f1 == null || f2 == null) return 0.0;
-  const Eigen::Vector3d n1 = face_normal(f1, g, pm), n2 = face_normal(f2, g, pm);
-  if (n1.squaredNorm() == 0 || n2.squaredNorm() == 0) return 0.0;
-  const Eigen::Vector3d c = n1.cross(n2);
-  const double a = std::atan2(c.norm(), n1.dot(n2));
-  const Eigen::Vector3d e = point(target(h, g), g, pm) - point(source(h, g), g, pm);
-  return c.dot(e) < 0 ? -a : a;
-}
-template <FaceGraph G>
-double dihedral_angle(halfedge_descriptor_t<G> h, const G& g) {
-  return dihedral_angle(h, g, get(vertex_point, g));
-}
-
-/// The squared length of edge(h).
-template <HalfedgeGraph G, class PointMap = detail::geom::default_point_map<G>>
-double squared_edge_length(halfedge_descriptor_t<G> h, const G& g, PointMap pm) {
-  return (point(target(h, g), g, pm) - point(source(h, g), g, pm)).squaredNorm();
-}
-template <HalfedgeGraph G>
-double squared_edge_length(halfedge_descriptor_t<G> h, const G& g) {
-  return squared_edge_length(h, g, get(vertex_point, g));
-}
-
-/// The length of edge(h).
-template <HalfedgeGraph G, class PointMap = detail::geom::default_point_map<G>>
-double edge_length(halfedge_descriptor_t<G> h, const G& g, PointMap pm) {
-  return std::sqrt(squared_edge_length(h, g, pm));
-}
-template <HalfedgeGraph G>
-double edge_length(halfedge_descriptor_t<G> h, const G& g) {
-  return edge_length(h, g, get(vertex_point, g));
-}
-
-/// The unit normal at v: the unit normals of its faces weighted by their
-/// corner angles at v (Thürmer & Wüthrich 1998); zero for an isolated vertex
-/// or one whose faces are all degenerate.
-template <FaceGraph G, class PointMap = detail::geom::default_point_map<G>>
-Eigen::Vector3d vertex_normal(vertex_descriptor_t<G> v, const G& g, PointMap pm) {
-  Eigen::Vector3d n = Eigen::Vector3d::Zero();
-  const auto h0 = halfedge(v, g);
-  if (h0 == boost::graph_traits<G>::null_halfedge()) return n;
-  auto h = h0;
-  do {
-    if (face(h, g) != boost::graph_traits<G>::null_face())
-      n += corner_angle(h, g, pm) * unit_face_normal(face(h, g), g, pm);
-    h = opposite(next(h, g), g);
-  } while (h != h0);
-  const double l = n.norm();
-  return l > 0 ? Eigen::Vector3d(n / l) : Eigen::Vector3d::Zero();
-}
-template <FaceGraph G>
-Eigen::Vector3d vertex_normal(vertex_descriptor_t<G> v, const G& g) {
-  return vertex_normal(v, g, get(vertex_point, g));
-}
-
-/// The mean length of g's edges (0 for a mesh without edges).
-template <class G, class PointMap = detail::geom::default_point_map<G>>
-  requires HalfedgeGraph<G> && EdgeListGraph<G>
-double mean_edge_length(const G& g, PointMap pm) {
-  double s = 0;
-  std::size_t n = 0;
-  for (const auto e : edges(g)) {
-    s += edge_length(halfedge(e, g), g, pm);
-    ++n;
+/// corner_angle(h, g[, pm]): the angle of face(h) at target(h), between the
+/// sides to source(h) and to target(next(h)), in radians.
+inline constexpr struct Corner_angle_fn {
+  template <FaceGraph G, PointMapOf<G> PointMap>
+  double operator()(halfedge_descriptor_t<G> h, const G& g, const PointMap& pm) const {
+    const Eigen::Vector3d p = point(target(h, g), g, pm);
+    return angle_between(point(source(h, g), g, pm) - p, point(target(next(h, g), g), g, pm) - p);
   }
-  return n ? s / static_cast<double>(n) : 0.0;
-}
-template <class G>
-  requires HalfedgeGraph<G> && EdgeListGraph<G>
-double mean_edge_length(const G& g) {
-  return mean_edge_length(g, get(vertex_point, g));
-}
+  template <FaceGraph G>
+  double operator()(halfedge_descriptor_t<G> h, const G& g) const {
+    return (*this)(h, g, get(vertex_point, g));
+  }
+} corner_angle{};
 
-/// The axis-aligned bounding box of g's vertices (empty for a mesh without vertices).
-template <class G, class PointMap = detail::geom::default_point_map<G>>
-  requires HalfedgeGraph<G> && VertexListGraph<G>
-Eigen::AlignedBox3d bounding_box(const G& g, PointMap pm) {
-  Eigen::AlignedBox3d box;  // Eigen's default box is empty
-  for (const auto v : vertices(g)) box.extend(point(v, g, pm));
-  return box;
-}
-template <class G>
-  requires HalfedgeGraph<G> && VertexListGraph<G>
-Eigen::AlignedBox3d bounding_box(const G& g) {
-  return bounding_box(g, get(vertex_point, g));
-}
+/// dihedral_angle(h, g[, pm]): the signed bend of the surface across
+/// edge(h), in radians: 0 where face(h) and face(opposite(h)) are coplanar,
+/// positive at a convex edge, negative at a concave one; 0 on a border edge
+/// or next to a degenerate face.
+inline constexpr struct Dihedral_angle_fn {
+  template <FaceGraph G, PointMapOf<G> PointMap>
+  double operator()(halfedge_descriptor_t<G> h, const G& g, const PointMap& pm) const {
+    const auto null = boost::graph_traits<G>::null_face();
+    const auto f1 = face(h, g), f2 = face(opposite(h, g), g);
+    if (f1 == null || f2 == null) return 0.0;
+    const Eigen::Vector3d n1 = face_normal(f1, g, pm), n2 = face_normal(f2, g, pm);
+    if (n1.squaredNorm() == 0 || n2.squaredNorm() == 0) return 0.0;
+    const Eigen::Vector3d c = n1.cross(n2);
+    const double a = std::atan2(c.norm(), n1.dot(n2));
+    const Eigen::Vector3d e = point(target(h, g), g, pm) - point(source(h, g), g, pm);
+    return c.dot(e) < 0 ? -a : a;
+  }
+  template <FaceGraph G>
+  double operator()(halfedge_descriptor_t<G> h, const G& g) const {
+    return (*this)(h, g, get(vertex_point, g));
+  }
+} dihedral_angle{};
 
-/// The length of the bounding box's diagonal (0 for an empty mesh).
-template <class G, class PointMap = detail::geom::default_point_map<G>>
-  requires HalfedgeGraph<G> && VertexListGraph<G>
-double diagonal(const G& g, PointMap pm) {
-  const Eigen::AlignedBox3d b = bounding_box(g, pm);
-  return b.isEmpty() ? 0.0 : b.diagonal().norm();
-}
-template <class G>
-  requires HalfedgeGraph<G> && VertexListGraph<G>
-double diagonal(const G& g) {
-  return diagonal(g, get(vertex_point, g));
-}
+/// squared_edge_length(h, g[, pm]): the squared length of edge(h).
+inline constexpr struct Squared_edge_length_fn {
+  template <HalfedgeGraph G, PointMapOf<G> PointMap>
+  double operator()(halfedge_descriptor_t<G> h, const G& g, const PointMap& pm) const {
+    return (point(target(h, g), g, pm) - point(source(h, g), g, pm)).squaredNorm();
+  }
+  template <HalfedgeGraph G>
+  double operator()(halfedge_descriptor_t<G> h, const G& g) const {
+    return (*this)(h, g, get(vertex_point, g));
+  }
+} squared_edge_length{};
 
-/// The sum of the face areas.
-template <class G, class PointMap = detail::geom::default_point_map<G>>
-  requires FaceListGraph<G>
-double surface_area(const G& g, PointMap pm) {
-  double s = 0;
-  for (const auto f : faces(g)) s += face_area(f, g, pm);
-  return s;
-}
-template <class G>
-  requires FaceListGraph<G>
-double surface_area(const G& g) {
-  return surface_area(g, get(vertex_point, g));
-}
+/// edge_length(h, g[, pm]): the length of edge(h).
+inline constexpr struct Edge_length_fn {
+  template <HalfedgeGraph G, PointMapOf<G> PointMap>
+  double operator()(halfedge_descriptor_t<G> h, const G& g, const PointMap& pm) const {
+    return std::sqrt(squared_edge_length(h, g, pm));
+  }
+  template <HalfedgeGraph G>
+  double operator()(halfedge_descriptor_t<G> h, const G& g) const {
+    return (*this)(h, g, get(vertex_point, g));
+  }
+} edge_length{};
 
-/// The signed volume enclosed by g: Σ over the fan triangles (p₀, pᵢ, pᵢ₊₁)
-/// of every face of p₀ · (pᵢ × pᵢ₊₁) / 6, as CGAL's PMP::volume (positive for
-/// a closed, outward-oriented mesh; for an open mesh, the volume of the cone
-/// from the origin).
-template <class G, class PointMap = detail::geom::default_point_map<G>>
-  requires FaceListGraph<G>
-double volume(const G& g, PointMap pm) {
-  double s = 0;
-  for (const auto f : faces(g)) {
-    const auto h0 = detail::geom::canonical_halfedge(f, g);
-    const Eigen::Vector3d p0 = point(target(h0, g), g, pm);
-    auto h = next(h0, g);
-    Eigen::Vector3d prev = point(target(h, g), g, pm);
-    for (h = next(h, g); h != h0; h = next(h, g)) {
-      const Eigen::Vector3d cur = point(target(h, g), g, pm);
-      s += p0.dot(prev.cross(cur));
-      prev = cur;
+/// vertex_normal(v, g[, pm]): the unit normal at v: the unit normals of its
+/// faces weighted by their corner angles at v (Thürmer & Wüthrich 1998);
+/// zero for an isolated vertex or one whose faces are all degenerate.
+inline constexpr struct Vertex_normal_fn {
+  template <FaceGraph G, PointMapOf<G> PointMap>
+  Eigen::Vector3d operator()(vertex_descriptor_t<G> v, const G& g, const PointMap& pm) const {
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    const auto h0 = halfedge(v, g);
+    if (h0 == boost::graph_traits<G>::null_halfedge()) return n;
+    auto h = h0;
+    do {
+      if (face(h, g) != boost::graph_traits<G>::null_face())
+        n += corner_angle(h, g, pm) * unit_face_normal(face(h, g), g, pm);
+      h = opposite(next(h, g), g);
+    } while (h != h0);
+    const double l = n.norm();
+    return l > 0 ? Eigen::Vector3d(n / l) : Eigen::Vector3d::Zero();
+  }
+  template <FaceGraph G>
+  Eigen::Vector3d operator()(vertex_descriptor_t<G> v, const G& g) const {
+    return (*this)(v, g, get(vertex_point, g));
+  }
+} vertex_normal{};
+
+/// mean_edge_length(g[, pm]): the mean length of g's edges (0 without edges).
+inline constexpr struct Mean_edge_length_fn {
+  template <class G, PointMapOf<G> PointMap>
+    requires HalfedgeGraph<G> && EdgeListGraph<G>
+  double operator()(const G& g, const PointMap& pm) const {
+    double s = 0;
+    std::size_t n = 0;
+    for (const auto e : edges(g)) {
+      s += edge_length(halfedge(e, g), g, pm);
+      ++n;
     }
+    return n ? s / static_cast<double>(n) : 0.0;
   }
-  return s / 6.0;
-}
-template <class G>
-  requires FaceListGraph<G>
-double volume(const G& g) {
-  return volume(g, get(vertex_point, g));
-}
+  template <class G>
+    requires HalfedgeGraph<G> && EdgeListGraph<G>
+  double operator()(const G& g) const {
+    return (*this)(g, get(vertex_point, g));
+  }
+} mean_edge_length{};
+
+/// bounding_box(g[, pm]): the box of g's vertices (isEmpty() without vertices).
+inline constexpr struct Bounding_box_fn {
+  template <class G, PointMapOf<G> PointMap>
+    requires HalfedgeGraph<G> && VertexListGraph<G>
+  Eigen::AlignedBox3d operator()(const G& g, const PointMap& pm) const {
+    Eigen::AlignedBox3d box;  // Eigen's default box is empty
+    for (const auto v : vertices(g)) box.extend(point(v, g, pm));
+    return box;
+  }
+  template <class G>
+    requires HalfedgeGraph<G> && VertexListGraph<G>
+  Eigen::AlignedBox3d operator()(const G& g) const {
+    return (*this)(g, get(vertex_point, g));
+  }
+} bounding_box{};
+
+/// diagonal(g[, pm]): the length of the bounding box's diagonal (0 for an empty mesh).
+inline constexpr struct Diagonal_fn {
+  template <class G, PointMapOf<G> PointMap>
+    requires HalfedgeGraph<G> && VertexListGraph<G>
+  double operator()(const G& g, const PointMap& pm) const {
+    const Eigen::AlignedBox3d b = bounding_box(g, pm);
+    return b.isEmpty() ? 0.0 : b.diagonal().norm();
+  }
+  template <class G>
+    requires HalfedgeGraph<G> && VertexListGraph<G>
+  double operator()(const G& g) const {
+    return (*this)(g, get(vertex_point, g));
+  }
+} diagonal{};
+
+/// surface_area(g[, pm]): the sum of the face areas.
+inline constexpr struct Surface_area_fn {
+  template <FaceListGraph G, PointMapOf<G> PointMap>
+  double operator()(const G& g, const PointMap& pm) const {
+    double s = 0;
+    for (const auto f : faces(g)) s += face_area(f, g, pm);
+    return s;
+  }
+  template <FaceListGraph G>
+  double operator()(const G& g) const {
+    return (*this)(g, get(vertex_point, g));
+  }
+} surface_area{};
+
+/// volume(g[, pm]): the signed volume enclosed by g: Σ over the fan
+/// triangles (p₀, pᵢ, pᵢ₊₁) of every face of p₀ · (pᵢ × pᵢ₊₁) / 6, as CGAL's
+/// PMP::volume (positive for a closed, outward-oriented mesh; for an open
+/// mesh, the volume of the cone from the origin).
+inline constexpr struct Volume_fn {
+  template <FaceListGraph G, PointMapOf<G> PointMap>
+  double operator()(const G& g, const PointMap& pm) const {
+    double s = 0;
+    for (const auto f : faces(g)) {
+      const auto h0 = detail::geom::canonical_halfedge(f, g);
+      const Eigen::Vector3d p0 = point(target(h0, g), g, pm);
+      auto h = next(h0, g);
+      Eigen::Vector3d prev = point(target(h, g), g, pm);
+      for (h = next(h, g); h != h0; h = next(h, g)) {
+        const Eigen::Vector3d cur = point(target(h, g), g, pm);
+        s += p0.dot(prev.cross(cur));
+        prev = cur;
+      }
+    }
+    return s / 6.0;
+  }
+  template <FaceListGraph G>
+  double operator()(const G& g) const {
+    return (*this)(g, get(vertex_point, g));
+  }
+} volume{};
 
 /// Do the closed triangles (a0, a1, a2) and (b0, b1, b2) share a point?
 /// Exact for any finite input, degenerate triangles included (a collinear
@@ -333,9 +367,10 @@ inline bool collinear(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const 
 
 /// A triangle of a mesh: its corner points and the ids of its vertices
 /// (any integers; equal ids mean the same mesh vertex).
+template <class Id = std::size_t>
 struct Mesh_triangle {
   std::array<Eigen::Vector3d, 3> p;
-  std::array<std::size_t, 3> id;
+  std::array<Id, 3> id;
 };
 
 /// Do two triangles of one mesh intersect beyond what they share? The
@@ -348,7 +383,8 @@ struct Mesh_triangle {
 /// - three (the same corners twice): always.
 /// Degenerate triangles are the caller's matter (self_intersections() reports
 /// them on their own, as CGAL does).
-inline bool faces_intersect(const Mesh_triangle& a, const Mesh_triangle& b) {
+template <class Id>
+bool faces_intersect(const Mesh_triangle<Id>& a, const Mesh_triangle<Id>& b) {
   int shared = 0, ia = -1, ib = -1;
   std::array<bool, 3> a_shared{}, b_shared{};
   for (int i = 0; i < 3; ++i)
