@@ -74,7 +74,6 @@
 #include <genmesh/concepts.h>
 #include <genmesh/detail/local_operations_primitives.h>
 #include <genmesh/exceptions.h>
-#include <genmesh/geometry.h>
 #include <genmesh/point_traits.h>
 #include <genmesh/property_maps.h>
 #include <genmesh/visitor.h>
@@ -110,7 +109,9 @@ namespace detail::lo {
 template <class G>
 Eigen::Vector3d midpoint(V<G> a, V<G> b, const G& g) {
   if constexpr (HasVertexPoints<G>) {
-    return 0.5 * (point(a, g) + point(b, g));
+    auto pm = get(vertex_point, g);
+    using P = point_t<G>;
+    return 0.5 * (to_eigen(P(get(pm, a))) + to_eigen(P(get(pm, b))));
   } else {
     return Eigen::Vector3d::Zero();
   }
@@ -124,7 +125,19 @@ void set_point(V<G> v, const Eigen::Vector3d& p, G& g) {
 // Puts v at the centroid of the corners of face(h).
 template <class G>
 void set_centroid(V<G> v, H<G> h, G& g) {
-  if constexpr (HasVertexPoints<G>) set_point(v, face_centroid(face(h, g), g), g);
+  if constexpr (HasVertexPoints<G>) {
+    auto pm = get(vertex_point, g);
+    using P = point_t<G>;
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    int n = 0;
+    H<G> x = h;
+    do {
+      c += to_eigen(P(get(pm, target(x, g))));
+      ++n;
+      x = next(x, g);
+    } while (x != h);
+    put(pm, v, from_eigen<P>(c / n));
+  }
 }
 
 // ---------------------------------------------------------------------------
