@@ -188,6 +188,26 @@ TYPED_TEST(Simplification, LockedBorderStays) {
   for (const auto& [x, y, z] : border_points(g2)) EXPECT_NEAR(z, 0.0, 1e-9);
 }
 
+// Locked vertices keep their index and their point.
+TYPED_TEST(Simplification, LockedVerticesStay) {
+  const Polygon_soup soup = genmesh::make_icosphere(3);
+  TypeParam g = mesh_of<TypeParam>(soup);
+  auto locked = [](std::size_t v) { return v % 7 == 0; };
+  const auto r = genmesh::simplify(g, {.target_ratio = 0.1, .is_locked = locked});
+  EXPECT_TRUE(genmesh::check_mesh(g).ok());
+  EXPECT_LT(r.faces, soup.num_faces() / 4);
+  auto pm = get(genmesh::vertex_point, g);
+  using P = genmesh::point_t<TypeParam>;
+  std::size_t seen = 0;
+  for (auto v : vertices(g)) {
+    const auto i = static_cast<std::size_t>(get(get(genmesh::vertex_index, g), v));
+    if (!locked(i)) continue;
+    ++seen;
+    EXPECT_TRUE(genmesh::to_eigen(P(get(pm, v))) == soup.points[i]) << "vertex " << i;
+  }
+  EXPECT_EQ(seen, (soup.points.size() + 6) / 7);
+}
+
 TYPED_TEST(Simplification, MaxErrorStops) {
   TypeParam g = mesh_of<TypeParam>(inputs()[4].soup); // elephant
   const auto r = genmesh::simplify(g, {.max_error = 0.002, .max_error_relative = true});

@@ -104,6 +104,8 @@ struct Simplification_options {
   double border_weight = 100.0; ///< boundary quadric weight (CGAL's GH discontinuity multiplier)
   bool triangulate = false;     ///< triangulate polygons first instead of refusing them
   bool check_input = true;      ///< refuse non-manifold vertices (an O(n) pass)
+  /// Vertices (by vertex index) that never move and never disappear.
+  std::function<bool(std::size_t vertex_index)> is_locked = {};
   Simplification_visitor visitor = {};
 };
 

@@ -229,6 +229,9 @@ class Collapser {
     hint_.assign(vb, 0);
     refused_.assign(eb, 0);
     edesc_.assign(eb, E{});
+    if (o_.is_locked)
+      for (const V v : vertices(g_))
+        if (o_.is_locked(vi(v))) locked_[vi(v)] = 1;
     if constexpr (requires { policy_.mean_edge_length; }) {
       double sum = 0;
       std::size_t n = 0;
