@@ -20,8 +20,9 @@
 //   using Vertex_data = ...;                         // regular, default-constructible
 //   Vertex_data face(a, b, c) const;                 // a triangle's contribution to each corner
 //   Vertex_data border(a, b, c, weight) const;       // a border edge a→b of triangle (a, b, c)
-//   Vertex_data merge(const Vertex_data&, const Vertex_data&) const;
 //   Placement place(const Vertex_data& sum, pa, pb) const;   // cost and position of collapsing a–b
+// and optionally (defaults: x + y, and {sum(x), x} for a callable Vertex_data)
+//   Vertex_data merge(const Vertex_data&, const Vertex_data&) const;
 //   Placement fixed(const Vertex_data& sum, pa, pb, x) const; // cost of collapsing a–b onto x
 // (points are Eigen::Vector3d; merge must be commutative bit for bit, so
 // that every backend computes the same numbers.)
@@ -209,7 +210,6 @@ struct Plane_quadrics {
                  double weight) const {
     return detail::simplification::border_plane(a, b, c, weight, area_weighted);
   }
-  Quadric merge(const Quadric& x, const Quadric& y) const { return x + y; }
   Placement place(const Quadric& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
     Eigen::Vector3d x;
     if (q.minimizer(x, conditioning)) {
@@ -218,9 +218,6 @@ struct Plane_quadrics {
       if ((x - m).squaredNorm() <= limit) return {q(x), x};
     }
     return detail::simplification::best_of_ends(q, a, b);
-  }
-  Placement fixed(const Quadric& q, const Eigen::Vector3d&, const Eigen::Vector3d&, const Eigen::Vector3d& x) const {
-    return {q(x), x};
   }
 };
 
@@ -250,14 +247,10 @@ struct Probabilistic_quadrics {
                  double weight) const {
     return detail::simplification::border_plane(a, b, c, weight, area_weighted);
   }
-  Quadric merge(const Quadric& x, const Quadric& y) const { return x + y; }
   Placement place(const Quadric& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
     Eigen::Vector3d x;
     if (q.minimizer(x, 1e-12)) return {q(x), x};
     return detail::simplification::best_of_ends(q, a, b);
-  }
-  Placement fixed(const Quadric& q, const Eigen::Vector3d&, const Eigen::Vector3d&, const Eigen::Vector3d& x) const {
-    return {q(x), x};
   }
 };
 

@@ -69,6 +69,19 @@ inline Eigen::Vector3d canonical_normal(std::size_t ia, const Eigen::Vector3d& a
   return (a - c).cross(b - c);
 }
 
+// The policy's merge and fixed placement, or the quadric defaults.
+template <class Policy, class Data>
+Data merge(const Policy& p, const Data& x, const Data& y) {
+  if constexpr (requires { p.merge(x, y); }) return p.merge(x, y);
+  else return x + y;
+}
+template <class Policy, class Data>
+Placement fixed(const Policy& p, const Data& s, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                const Eigen::Vector3d& x) {
+  if constexpr (requires { p.fixed(s, a, b, x); }) return p.fixed(s, a, b, x);
+  else return {s(x), x};
+}
+
 template <class G, class Policy>
 class Collapser {
   using V = vertex_descriptor_t<G>;
@@ -253,9 +266,9 @@ class Collapser {
         std::tie(a, b, c) = std::make_tuple(c, a, b);
       }
       const Data q = policy_.face(pos_[a], pos_[b], pos_[c]);
-      data_[a] = policy_.merge(data_[a], q);
-      data_[b] = policy_.merge(data_[b], q);
-      data_[c] = policy_.merge(data_[c], q);
+      data_[a] = simplification::merge(policy_, data_[a], q);
+      data_[b] = simplification::merge(policy_, data_[b], q);
+      data_[c] = simplification::merge(policy_, data_[c], q);
     }
     for (const E e : edges(g_)) {
       edesc_[ei(e)] = e;
@@ -268,8 +281,8 @@ class Collapser {
         locked_[a] = locked_[b] = 1;
       } else if (o_.border == Border_mode::preserve) {
         const Data q = policy_.border(pos_[a], pos_[b], pos_[c], o_.border_weight);
-        data_[a] = policy_.merge(data_[a], q);
-        data_[b] = policy_.merge(data_[b], q);
+        data_[a] = simplification::merge(policy_, data_[a], q);
+        data_[b] = simplification::merge(policy_, data_[b], q);
       }
     }
     const double deg = std::clamp(o_.max_normal_deviation, 0.0, 180.0);
@@ -294,9 +307,9 @@ class Collapser {
     std::size_t a = vi(source(h, g_)), b = vi(target(h, g_));
     if (a > b) std::swap(a, b);
     if (locked_[a] && locked_[b]) return false;
-    const Data s = policy_.merge(data_[a], data_[b]);
-    if (locked_[a]) pl = policy_.fixed(s, pos_[a], pos_[b], pos_[a]);
-    else if (locked_[b]) pl = policy_.fixed(s, pos_[a], pos_[b], pos_[b]);
+    const Data s = simplification::merge(policy_, data_[a], data_[b]);
+    if (locked_[a]) pl = simplification::fixed(policy_, s, pos_[a], pos_[b], pos_[a]);
+    else if (locked_[b]) pl = simplification::fixed(policy_, s, pos_[a], pos_[b], pos_[b]);
     else pl = policy_.place(s, pos_[a], pos_[b]);
     return true;
   }
@@ -378,7 +391,7 @@ class Collapser {
     const std::size_t ip = vi(p), iq = vi(q);
     if (o_.visitor.on_collapse) o_.visitor.on_collapse(ip, iq, pl.position, pl.cost);
     if (!genmesh::collapse_edge(e, g_)) return false; // can_collapse_edge said yes: never happens
-    data_[iq] = policy_.merge(data_[ip], data_[iq]);
+    data_[iq] = simplification::merge(policy_, data_[ip], data_[iq]);
     pos_[iq] = pl.position;
     faces_ -= static_cast<std::size_t>(top) + static_cast<std::size_t>(bottom);
     // Every edge of the survivor changes cost; the refused edges of its
