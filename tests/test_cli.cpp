@@ -91,7 +91,7 @@ TEST(Cli, DemoRunsEveryBackendAndTheyAgree) {
   int records = 0;
   for (std::string line; std::getline(lines, line); ++records)
     EXPECT_TRUE(json_bool(line, "same_as_reference")) << line;
-  EXPECT_GE(records, 54);  // six meshes, three steps, three backends
+  EXPECT_GE(records, 72);  // six meshes, four steps, three backends
 }
 
 // `info --json` on real meshes equals CGAL's own reading of the file.
@@ -468,6 +468,28 @@ TEST(CliHostile, SignalsWhileWritingRemoveTheTemporary) {
     EXPECT_EQ(entries, 2u) << "signal " << sig << ": a temporary is left";
     EXPECT_EQ(read_file(out), "old output\n");
   }
+// simplify: the target is met on every backend with the same result, the
+// JSON record says why it stopped, and bad targets are usage errors.
+TEST(Cli, SimplifyMeetsTheTargetOnEveryBackend) {
+  const std::string in = real_mesh("elephant.off");
+  std::string first;
+  for (const char* backend : {"halfedge", "surface-mesh", "incidence"}) {
+    SCOPED_TRACE(backend);
+    const std::string out = tmp_path(std::string("simplified_") + backend + ".off");
+    Cli_run r = genmesh("simplify " + in + " " + out + " --faces 1000 --json --backend " + backend);
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_EQ(json_int(r.out, "faces"), 1000);
+    EXPECT_NE(r.out.find("\"stop_reason\":\"target_faces\""), std::string::npos) << r.out;
+    EXPECT_EQ(json_int(r.out, "euler_characteristic"), -4);  // genus 3 kept
+    if (first.empty()) first = read_file(out);
+    else EXPECT_EQ(read_file(out), first);
+  }
+  EXPECT_EQ(genmesh("simplify " + in + " " + tmp_path("x.off")).exit_code, 2);              // no target
+  EXPECT_EQ(genmesh("simplify " + in + " " + tmp_path("x.off") + " --ratio 2").exit_code, 2); // ratio > 1
+  EXPECT_EQ(genmesh("simplify " + in + " " + tmp_path("x.off") + " --faces 10 --policy nope").exit_code, 2);
+  Cli_run quads = genmesh("simplify " + real_mesh("cube_quad.off") + " " + tmp_path("x.off") + " --faces 4");
+  EXPECT_EQ(quads.exit_code, 2);
+  EXPECT_NE(quads.err.find("is not a triangle"), std::string::npos) << quads.err;
 }
 
 } // namespace

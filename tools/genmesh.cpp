@@ -6,6 +6,9 @@
 //   genmesh convert IN OUT [--backend B] [--json] [--binary] [--repair]
 //   genmesh subdivide IN OUT --scheme S --levels N [--boundary smooth|fixed]
 //                          [--creases FILE] [--backend B] [--json]
+//   genmesh simplify IN OUT (--faces N | --ratio R | --error E)
+//                          [--policy quadric|probabilistic|length]
+//                          [--boundary preserve|lock|free] [--backend B] [--json]
 //   genmesh demo           [--json]                 every backend on built-in meshes
 //   (--backend halfedge|surface-mesh|incidence; check --backend incidence also
 //   names the fins, misoriented edges and bow-ties of a non-manifold input)
@@ -23,6 +26,7 @@
 #include <genmesh/incidence_mesh.h>
 #include <genmesh/io.h>
 #include <genmesh/local_operations.h>
+#include <genmesh/simplification.h>
 #include <genmesh/soup_to_mesh.h>
 #include <genmesh/subdivision.h>
 #include <genmesh/validity.h>
@@ -94,6 +98,7 @@ const char* usage_text =
     "  check FILE         validity report (soup problems, halfedge invariants)\n"
     "  convert IN OUT     read IN, build a valid mesh, write OUT (format from extension)\n"
     "  subdivide IN OUT   subdivide IN, write OUT\n"
+    "  simplify IN OUT    simplify IN by edge collapses, write OUT\n"
     "  demo               run genmesh on built-in meshes on every backend\n"
     "options:\n"
     "  --backend halfedge|surface-mesh|incidence   mesh type to build (default halfedge)\n"
@@ -106,6 +111,10 @@ const char* usage_text =
     "  --creases FILE     lines 'u v sharpness' (input vertex indices; inf = sharp)\n"
     "  --max-file-size S  largest input file read (default 8G; suffixes K M G T)\n"
     "  --max-memory S     subdivide: largest predicted memory (default: half of RAM)\n"
+    "  --faces N | --ratio R | --error E   simplify: face target, face ratio, or max error\n"
+    "                     (a distance, relative to the bounding-box diagonal)\n"
+    "  --policy P         simplify: quadric|probabilistic|length (default quadric)\n"
+    "                     --boundary for simplify: preserve|lock|free (default preserve)\n"
     "formats: OFF, OBJ, PLY (ASCII, binary), STL (ASCII, binary)\n";
 
 struct Args {
@@ -121,6 +130,11 @@ struct Args {
   std::string creases;
   std::uint64_t max_file_size = genmesh::detail::io::default_max_file_size;
   std::optional<std::uint64_t> max_memory;
+  // simplify
+  std::optional<std::size_t> faces;
+  std::optional<double> ratio, error;
+  std::string policy = "quadric";
+  bool boundary_given = false;
 };
 
 // "123", "64K", "1.5G" (powers of 1024) -> bytes; nullopt if malformed.
@@ -141,6 +155,21 @@ std::optional<std::uint64_t> parse_size(const std::string& v) {
   return static_cast<std::uint64_t>(bytes);
 }
 
+// A number option's value, or a usage error naming the option.
+double number_option(const std::string& option, const std::string& v, double lo, double hi) {
+  std::size_t used = 0;
+  double x = 0;
+  try {
+    x = std::stod(v, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != v.size() || !(x >= lo && x <= hi))
+    throw usage_error(option + " takes a number from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                      ", got '" + v + "'");
+  return x;
+}
+
 Args parse(int argc, char** argv) {
   Args a;
   if (argc < 2) throw usage_error("no command given");
@@ -159,12 +188,23 @@ Args parse(int argc, char** argv) {
       }
       if (a.backend != "halfedge" && a.backend != "surface-mesh" && a.backend != "incidence")
         throw usage_error("unknown backend '" + bounded(a.backend, 40) + "' (halfedge|surface-mesh|incidence)");
+    } else if (s == "--faces" || s == "--ratio" || s == "--error" || s == "--policy" || s == "--features") {
+      if (i + 1 >= argc) throw usage_error(s + " needs a value");
+      const std::string v = argv[++i];
+      if (s == "--faces") a.faces = static_cast<std::size_t>(number_option(s, v, 0, 4e9));
+      else if (s == "--ratio") a.ratio = number_option(s, v, 0, 1);
+      else if (s == "--error") a.error = number_option(s, v, 0, 1e300);
+      else if (s == "--policy") a.policy = v;
+      else throw usage_error("--features is not implemented yet (simplify keeps no feature lines)");
     } else if (s == "--scheme" || s == "--levels" || s == "--boundary" || s == "--creases" ||
                s == "--max-file-size" || s == "--max-memory") {
       if (i + 1 >= argc) throw usage_error(s + " needs a value");
       const std::string v = argv[++i];
       if (s == "--scheme") a.scheme = v;
-      else if (s == "--boundary") a.boundary = v;
+      else if (s == "--boundary") {
+        a.boundary = v;
+        a.boundary_given = true;
+      }
       else if (s == "--creases") {
         if (v.empty()) throw usage_error("--creases needs a file name, got ''");
         a.creases = v;
@@ -187,7 +227,7 @@ Args parse(int argc, char** argv) {
     }
   }
   const std::map<std::string, std::size_t> files_needed{
-      {"info", 1}, {"check", 1}, {"convert", 2}, {"subdivide", 2}, {"demo", 0}};
+      {"info", 1}, {"check", 1}, {"convert", 2}, {"subdivide", 2}, {"simplify", 2}, {"demo", 0}};
   auto it = files_needed.find(a.command);
   if (it == files_needed.end()) throw usage_error("unknown command '" + bounded(a.command, 40) + "'");
   if (a.files.size() != it->second)
@@ -204,6 +244,16 @@ Args parse(int argc, char** argv) {
       throw usage_error("unknown boundary rule '" + bounded(a.boundary, 40) + "' (smooth|fixed)");
     if (!a.creases.empty() && a.scheme != "loop" && a.scheme != "catmull-clark")
       throw usage_error("--creases applies to loop and catmull-clark only");
+  }
+  if (a.command == "simplify") {
+    if (!a.faces && !a.ratio && !a.error) throw usage_error("simplify needs --faces, --ratio or --error");
+    if (a.policy == "lindstrom-turk")
+      throw usage_error("--policy lindstrom-turk is not implemented yet (quadric|probabilistic|length)");
+    if (a.policy != "quadric" && a.policy != "probabilistic" && a.policy != "length")
+      throw usage_error("unknown policy '" + a.policy + "' (quadric|probabilistic|length)");
+    if (!a.boundary_given) a.boundary = "preserve";
+    if (a.boundary != "preserve" && a.boundary != "lock" && a.boundary != "free")
+      throw usage_error("unknown boundary mode '" + a.boundary + "' (preserve|lock|free)");
   }
   return a;
 }
@@ -653,6 +703,57 @@ int cmd_subdivide(const Args& a) {
   });
 }
 
+// ---- simplify ----------------------------------------------------------------
+
+template <class Policy, class Mesh>
+genmesh::Simplification_result simplify_with(Mesh& mesh, const Args& a, bool progress) {
+  genmesh::Simplification_options<Policy> o;
+  o.target_faces = a.faces;
+  o.target_ratio = a.ratio;
+  if (a.error) {
+    o.max_error = *a.error;
+    o.max_error_relative = true;
+  }
+  o.border = a.boundary == "lock"   ? genmesh::Border_mode::lock
+             : a.boundary == "free" ? genmesh::Border_mode::free
+                                    : genmesh::Border_mode::preserve;
+  if (progress)
+    o.visitor.on_progress = [](std::size_t faces, std::size_t target) {
+      std::fprintf(stderr, "\rsimplify: %zu faces (target %zu)   ", faces, target);
+    };
+  const auto r = genmesh::simplify(mesh, o);
+  if (progress) std::fprintf(stderr, "\n");
+  return r;
+}
+
+int cmd_simplify(const Args& a) {
+  genmesh::Polygon_soup soup = genmesh::read_soup(a.files[0]);
+  const bool progress = !a.json && isatty(STDERR_FILENO);
+  return with_backend(a.backend, [&](auto& mesh) {
+    genmesh::build_mesh(soup, mesh, {.repair = a.repair});
+    const auto t0 = std::chrono::steady_clock::now();
+    genmesh::Simplification_result r;
+    if (a.policy == "probabilistic") r = simplify_with<genmesh::Probabilistic_quadrics>(mesh, a, progress);
+    else if (a.policy == "length") r = simplify_with<genmesh::Edge_length>(mesh, a, progress);
+    else r = simplify_with<genmesh::Plane_quadrics>(mesh, a, progress);
+    const double seconds = seconds_since(t0);
+    genmesh::Mesh_report report = genmesh::check_mesh(mesh);
+    genmesh::write_mesh(a.files[1], mesh, {.binary = a.binary});
+    if (a.json) {
+      std::cout << "{\"command\":\"simplify\",\"file\":\"" << json_escape(a.files[0]) << "\",\"output\":\""
+                << json_escape(a.files[1]) << "\",\"backend\":\"" << a.backend << "\",\"policy\":\"" << a.policy
+                << "\",\"collapses\":" << r.collapses << ",\"max_error\":" << r.max_error
+                << ",\"stop_reason\":\"" << genmesh::to_string(r.stop_reason) << "\"," << json_counts(report)
+                << ",\"seconds\":" << seconds << "}\n";
+    } else {
+      std::cout << a.files[0] << " -> " << a.files[1] << ": " << soup.num_faces() << " -> " << report.faces
+                << " faces, " << r.collapses << " collapses, max error " << r.max_error << ", stopped: "
+                << genmesh::to_string(r.stop_reason) << ", " << seconds << " s\n";
+    }
+    return report.ok() ? exit_ok : exit_invalid;
+  });
+}
+
 // ---- demo ------------------------------------------------------------------
 
 struct Demo_row {
@@ -682,8 +783,9 @@ void random_local_operations(Mesh& mesh, unsigned seed, int count) {
 
 // The demo's steps: "build" (soup → mesh), "ops" (random local operations),
 // "subdiv" (two levels of Loop on triangle meshes, of Catmull-Clark on the
-// others). Later algorithms (simplification, remeshing) add theirs here.
-const std::vector<std::string> demo_steps{"build", "ops", "subdiv"};
+// others), "simplify" (quadric edge collapse to a quarter of the faces,
+// polygons triangulated first). Later algorithms (remeshing) add theirs here.
+const std::vector<std::string> demo_steps{"build", "ops", "subdiv", "simplify"};
 
 bool all_triangles(const genmesh::Polygon_soup& soup) {
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
@@ -703,6 +805,7 @@ Demo_row run_step(const std::string& mesh_name, const std::string& backend, cons
     if (all_triangles(input)) genmesh::loop_subdivision(mesh, {.iterations = 2});
     else genmesh::catmull_clark_subdivision(mesh, {.iterations = 2});
   }
+  if (step == "simplify") genmesh::simplify(mesh, {.target_ratio = 0.25, .triangulate = true});
   Demo_row row{mesh_name, backend, step, genmesh::check_mesh(mesh), {}, 0};
   row.seconds = seconds_since(t0);
   row.result = genmesh::canonical(genmesh::to_soup(mesh));
@@ -796,6 +899,7 @@ int main(int argc, char** argv) {
     if (a.command == "demo") return cmd_demo(a);
     if (a.command == "convert") return cmd_convert(a);
     if (a.command == "subdivide") return cmd_subdivide(a);
+    if (a.command == "simplify") return cmd_simplify(a);
     return cmd_info_or_check(a);
   } catch (const usage_error& e) {
     std::cerr << "genmesh: " << bounded(e.what()) << "\n" << usage_text;

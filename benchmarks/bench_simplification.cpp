@@ -1,0 +1,321 @@
+// Simplification side by side: genmesh::simplify (Garland–Heckbert plane
+// quadrics) on Halfedge_mesh, CGAL::Surface_mesh and Incidence_mesh; CGAL's
+// Surface_mesh_simplification::edge_collapse with GH plane, GH probabilistic
+// and Lindstrom–Turk policies; OpenMesh's Decimater with ModQuadricT;
+// meshoptimizer's meshopt_simplify. Single thread.
+//
+// Inputs: armadillo.off after two Loop levels (832k triangles) → 10% and →
+// 1%; mech-holes-shark.off (10k triangles, holes) → 10%.
+//
+//   genmesh_benchmarks --benchmark_filter=Simplification --benchmark_repetitions=3
+//                      --benchmark_report_aggregates_only=true
+//
+// Timed: the algorithm alone, in CPU time of the calling thread
+// (CLOCK_THREAD_CPUTIME_ID; the machine is shared, and wall time there
+// measured 2-4x the CPU time under load). A fresh copy of the input per
+// iteration, made and destroyed outside the timing. Counters, measured once per row on the
+// result outside the timing: faces_out; peak_MB (heap peak above the input
+// copy); hausdorff (symmetric, CGAL's approximate_symmetric_Hausdorff_distance
+// with 100k samples per side, relative to the input's bounding-box diagonal);
+// self_pairs (CGAL::Polygon_mesh_processing::self_intersections); manifold
+// (1 if genmesh::check_soup / check_mesh find no non-manifold element).
+#include <genmesh/adaptors/cgal.h>
+#include <genmesh/halfedge_mesh.h>
+#include <genmesh/incidence_mesh.h>
+#include <genmesh/io.h>
+#include <genmesh/simplification.h>
+#include <genmesh/soup_to_mesh.h>
+#include <genmesh/subdivision.h>
+#include <genmesh/validity.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_ratio_stop_predicate.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_probabilistic_plane_policies.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+
+#ifdef GENMESH_HAVE_MESHOPTIMIZER
+#include <meshoptimizer.h>
+#endif
+
+#include <benchmark/benchmark.h>
+
+#include "heap_counter.h"
+
+#include <ctime>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Surface_mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Halfedge_mesh = genmesh::Halfedge_mesh<>;
+using Incidence_mesh = genmesh::Incidence_mesh<>;
+struct Om_traits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+using Om_tri = OpenMesh::TriMesh_ArrayKernelT<Om_traits>;
+namespace SMS = CGAL::Surface_mesh_simplification;
+
+enum class Input { armadillo_loop2, shark };
+
+std::filesystem::path mesh_path(const char* name) {
+  const char* dir = std::getenv("GENMESH_DATA_DIR");
+  return std::filesystem::path(dir ? dir : GENMESH_DATA_DIR) / "meshes" / name;
+}
+
+const genmesh::Polygon_soup& soup(Input in) {
+  static const genmesh::Polygon_soup armadillo = [] {
+    Halfedge_mesh g;
+    genmesh::build_mesh(genmesh::read_soup(mesh_path("armadillo.off")), g);
+    genmesh::loop_subdivision(g, {.iterations = 2});
+    return genmesh::to_soup(g);
+  }();
+  static const genmesh::Polygon_soup shark = genmesh::read_soup(mesh_path("mech-holes-shark.off"));
+  return in == Input::armadillo_loop2 ? armadillo : shark;
+}
+
+// A soup as a Surface_mesh, duplicating non-manifold vertices (for measuring
+// results that are not manifold).
+Surface_mesh to_surface_mesh(const genmesh::Polygon_soup& s) {
+  Surface_mesh m;
+  genmesh::build_mesh(s, m, {.repair = true});
+  return m;
+}
+
+const Surface_mesh& input_sm(Input in) {
+  static const Surface_mesh a = to_surface_mesh(soup(Input::armadillo_loop2));
+  static const Surface_mesh b = to_surface_mesh(soup(Input::shark));
+  return in == Input::armadillo_loop2 ? a : b;
+}
+
+double diagonal(const genmesh::Polygon_soup& s) {
+  Eigen::AlignedBox3d box;
+  for (const auto& p : s.points) box.extend(p);
+  return box.diagonal().norm();
+}
+
+// The counters every row reports, from the result as a soup.
+void measure(benchmark::State& state, Input in, const genmesh::Polygon_soup& out, bool manifold) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const Surface_mesh result = to_surface_mesh(out);
+  const double h = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
+      input_sm(in), result, CGAL::parameters::number_of_points_on_faces(100000).random_seed(7),
+      CGAL::parameters::number_of_points_on_faces(100000).random_seed(7));
+  std::vector<std::pair<Surface_mesh::Face_index, Surface_mesh::Face_index>> pairs;
+  PMP::self_intersections<CGAL::Sequential_tag>(faces(result), result, std::back_inserter(pairs));
+  state.counters["faces_out"] = static_cast<double>(out.num_faces());
+  state.counters["hausdorff"] = h / diagonal(soup(in));
+  state.counters["self_pairs"] = static_cast<double>(pairs.size());
+  state.counters["manifold"] = manifold ? 1 : 0;
+}
+
+double thread_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// The name of the row being run (figures are kept per row).
+std::string current_row;
+
+std::size_t target_faces(Input in, double ratio) {
+  return static_cast<std::size_t>(std::ceil(ratio * static_cast<double>(soup(in).num_faces())));
+}
+
+// Runs make() (untimed), run(g) (timed), then measures the first result.
+template <class Make, class Run, class Result>
+void run_case(benchmark::State& state, Input in, Make make, Run run, Result result) {
+  // Measured once per row and process (repetitions reuse the figures).
+  static std::map<std::string, std::map<std::string, double>> figures;
+  auto& mine = figures[current_row];
+  bool measured = !mine.empty();
+  long long peak = 0;
+  for (auto _ : state) {
+    auto g = make();
+    const long long before = genmesh_bench::live_bytes();
+    genmesh_bench::reset_peak();
+    const double t0 = thread_seconds();
+    run(g);
+    const double t1 = thread_seconds();
+    peak = std::max(peak, genmesh_bench::peak_bytes() - before);
+    state.SetIterationTime(t1 - t0);
+    if (!measured) {
+      auto [s, manifold] = result(g);
+      measure(state, in, s, manifold);
+      for (const auto& [k, v] : state.counters) mine[k] = v;
+      measured = true;
+    }
+  }
+  for (const auto& [k, v] : mine) state.counters[k] = v;
+  state.counters["peak_MB"] = static_cast<double>(peak) / 1e6;
+}
+
+template <class G>
+void genmesh_row(benchmark::State& state, Input in, double ratio) {
+  run_case(
+      state, in,
+      [&] {
+        G g;
+        genmesh::build_mesh(soup(in), g, {.check = false});
+        return g;
+      },
+      [&](G& g) { genmesh::simplify(g, {.target_faces = target_faces(in, ratio)}); },
+      [](const G& g) { return std::pair{genmesh::to_soup(g), genmesh::check_mesh(g).ok()}; });
+}
+
+// CGAL's edge_collapse stops on an edge count; on these meshes the face
+// count follows (closed: F = 2E/3; the shark's border is 1% of its edges).
+template <class Policies>
+void cgal_row(benchmark::State& state, Input in, double ratio) {
+  run_case(
+      state, in, [&] { return input_sm(in); },
+      [&](Surface_mesh& g) {
+        const std::size_t target = target_faces(in, ratio);
+        auto stop = [&](const auto&, const auto&, std::size_t, std::size_t) { return g.number_of_faces() <= target; };
+        if constexpr (std::is_same_v<Policies, void>) {
+          SMS::edge_collapse(g, stop);
+        } else {
+          Policies p(g);
+          SMS::edge_collapse(g, stop, CGAL::parameters::get_cost(p.get_cost()).get_placement(p.get_placement()));
+        }
+      },
+      [](Surface_mesh& g) {
+        g.collect_garbage();
+        return std::pair{genmesh::to_soup(g), genmesh::check_mesh(g).ok()};
+      });
+}
+
+void openmesh_row(benchmark::State& state, Input in, double ratio) {
+  run_case(
+      state, in,
+      [&] {
+        auto g = std::make_unique<Om_tri>();
+        const auto& s = soup(in);
+        std::vector<Om_tri::VertexHandle> vh;
+        for (const auto& p : s.points) vh.push_back(g->add_vertex(Om_tri::Point(p.x(), p.y(), p.z())));
+        for (std::size_t i = 0; i < s.num_faces(); ++i) {
+          auto f = s.face(i);
+          g->add_face(vh[f[0]], vh[f[1]], vh[f[2]]);
+        }
+        return g;
+      },
+      [&](std::unique_ptr<Om_tri>& g) {
+        OpenMesh::Decimater::DecimaterT<Om_tri> dec(*g);
+        OpenMesh::Decimater::ModQuadricT<Om_tri>::Handle quadric;
+        dec.add(quadric);
+        dec.initialize();
+        dec.decimate_to_faces(0, target_faces(in, ratio));
+        g->garbage_collection();
+      },
+      [](std::unique_ptr<Om_tri>& g) {
+        genmesh::Polygon_soup s;
+        for (auto v : g->vertices()) {
+          const auto p = g->point(v);
+          s.add_point(p[0], p[1], p[2]);
+        }
+        for (auto f : g->faces()) {
+          std::vector<genmesh::Polygon_soup::Index> c;
+          for (auto v : g->fv_range(f)) c.push_back(static_cast<genmesh::Polygon_soup::Index>(v.idx()));
+          s.add_face(c);
+        }
+        return std::pair{s, genmesh::check_soup(s).ok()};
+      });
+}
+
+#ifdef GENMESH_HAVE_MESHOPTIMIZER
+struct Meshopt_input {
+  std::vector<float> positions;
+  std::vector<unsigned> indices, out;
+};
+
+void meshopt_row(benchmark::State& state, Input in, double ratio) {
+  run_case(
+      state, in,
+      [&] {
+        Meshopt_input m;
+        const auto& s = soup(in);
+        for (const auto& p : s.points)
+          for (int i = 0; i < 3; ++i) m.positions.push_back(static_cast<float>(p[i]));
+        m.indices.assign(s.indices.begin(), s.indices.end());
+        m.out.resize(m.indices.size());
+        return m;
+      },
+      [&](Meshopt_input& m) {
+        const std::size_t n = meshopt_simplify(m.out.data(), m.indices.data(), m.indices.size(), m.positions.data(),
+                                               m.positions.size() / 3, 3 * sizeof(float), 3 * target_faces(in, ratio),
+                                               1e30f);
+        m.out.resize(n);
+      },
+      [&](Meshopt_input& m) {
+        genmesh::Polygon_soup s;
+        std::vector<unsigned> number(soup(in).points.size(), ~0u);
+        for (unsigned& i : m.out) {
+          if (number[i] == ~0u) {
+            number[i] = static_cast<unsigned>(s.points.size());
+            s.points.push_back(soup(in).points[i]);
+          }
+          i = number[i];
+        }
+        for (std::size_t i = 0; i + 2 < m.out.size(); i += 3) s.add_face({m.out[i], m.out[i + 1], m.out[i + 2]});
+        return std::pair{s, genmesh::check_soup(s).ok()};
+      });
+}
+#endif
+
+void register_all() {
+  struct Case {
+    const char* name;
+    Input in;
+    double ratio;
+  };
+  for (const Case c : {Case{"armadillo832k_to10pc", Input::armadillo_loop2, 0.1},
+                       Case{"armadillo832k_to1pc", Input::armadillo_loop2, 0.01},
+                       Case{"shark_to10pc", Input::shark, 0.1}}) {
+    auto reg = [&](const std::string& row, auto fn) {
+      const std::string name = "Simplification/" + std::string(c.name) + "/" + row;
+      benchmark::RegisterBenchmark(name.c_str(),
+                                   [name, fn](benchmark::State& s) {
+                                     current_row = name;
+                                     fn(s);
+                                   })
+          ->Unit(benchmark::kMillisecond)
+          ->UseManualTime()
+          ->Iterations(1);
+    };
+    const Input in = c.in;
+    const double r = c.ratio;
+    reg("genmesh_Halfedge_mesh", [=](benchmark::State& s) { genmesh_row<Halfedge_mesh>(s, in, r); });
+    reg("genmesh_Surface_mesh", [=](benchmark::State& s) { genmesh_row<Surface_mesh>(s, in, r); });
+    reg("genmesh_Incidence_mesh", [=](benchmark::State& s) { genmesh_row<Incidence_mesh>(s, in, r); });
+    reg("CGAL_GH_plane", [=](benchmark::State& s) {
+      cgal_row<SMS::GarlandHeckbert_plane_policies<Surface_mesh, Kernel>>(s, in, r);
+    });
+    reg("CGAL_GH_probabilistic", [=](benchmark::State& s) {
+      cgal_row<SMS::GarlandHeckbert_probabilistic_plane_policies<Surface_mesh, Kernel>>(s, in, r);
+    });
+    reg("CGAL_Lindstrom_Turk", [=](benchmark::State& s) { cgal_row<void>(s, in, r); });
+    reg("OpenMesh_ModQuadric", [=](benchmark::State& s) { openmesh_row(s, in, r); });
+#ifdef GENMESH_HAVE_MESHOPTIMIZER
+    reg("meshoptimizer", [=](benchmark::State& s) { meshopt_row(s, in, r); });
+#endif
+  }
+}
+
+const bool registered = (register_all(), true);
+
+} // namespace

@@ -1,0 +1,136 @@
+// genmesh/simplification.h — edge-collapse simplification of triangle meshes
+// (Garland & Heckbert, "Surface simplification using quadric error metrics",
+// SIGGRAPH 1997, and the policies of <genmesh/simplification/quadric.h>).
+//
+//   genmesh::simplify(mesh, {.target_ratio = 0.1});
+//   genmesh::simplify(mesh, genmesh::Simplification_options<genmesh::Probabilistic_quadrics>{.target_faces = 5000});
+//
+// Repeatedly collapses the cheapest edge (collapse_edge, the local operation,
+// so Incidence_mesh collapses natively) and puts the surviving vertex where
+// the policy says, until a stop condition holds. Works on any mesh with the
+// local operations, vertex points and vertex/edge/face index maps:
+// genmesh::Halfedge_mesh, CGAL::Surface_mesh, genmesh::Incidence_mesh.
+//
+// Guarantees:
+// - Every collapse satisfies the link condition (can_collapse_edge), so the
+//   result is a valid manifold triangle mesh with the input's genus, border
+//   loop count and components (a collapse that would change them is refused).
+// - No face turns by more than .max_normal_deviation in one collapse and no
+//   face is flipped or made degenerate (zero area) — ever.
+// - Deterministic: the same input (same vertex and face order) and options
+//   give the same mesh, bit for bit, on every backend. Costs are computed from
+//   each face's corners in a canonical order (lowest vertex index first),
+//   vertex quadrics are summed in face index order, and queue ties are broken
+//   by the edge's sorted vertex-index pair.
+// - The surviving vertex of a collapse of edge e is target(halfedge(e))
+//   (the local operation's convention); its point is the policy's placement.
+//   Removed elements stay removed-but-allocated on backends with garbage
+//   (call collect_garbage to compact).
+//
+// Limits:
+// - Triangles only (polygons are refused naming the face, or triangulated
+//   first with .triangulate = true); non-manifold vertices and non-finite
+//   points are refused naming the vertex.
+// - The fold-over test looks at the faces around the collapsed edge only: the
+//   surface may still come to touch itself elsewhere (no global
+//   self-intersection test yet).
+// - An edge refused by a geometric test leaves the queue and returns when a
+//   collapse changes a vertex next to one of its ends (the test's inputs).
+#pragma once
+
+#include <genmesh/simplification/quadric.h>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+
+namespace genmesh {
+
+/// What happens at the mesh's borders.
+enum class Border_mode {
+  preserve, ///< border edges collapse along the border, held by boundary quadrics (planes through each border edge perpendicular to its face, weighted by .border_weight)
+  lock,     ///< border vertices never move and are never removed
+  free      ///< no special treatment (borders shrink and wander)
+};
+
+/// Why simplify() stopped.
+enum class Stop_reason {
+  target_faces,       ///< the face target (.target_faces or .target_ratio) was reached
+  max_error,          ///< the next collapse would exceed .max_error
+  no_collapse_left,   ///< every remaining edge is refused by the constraints
+  target_already_met  ///< the mesh had no more faces than the target: nothing done
+};
+
+inline const char* to_string(Stop_reason r) {
+  switch (r) {
+  case Stop_reason::target_faces: return "target_faces";
+  case Stop_reason::max_error: return "max_error";
+  case Stop_reason::no_collapse_left: return "no_collapse_left";
+  case Stop_reason::target_already_met: return "target_already_met";
+  }
+  return "unknown";
+}
+
+/// Observes simplify(). Vertices are numbered by the mesh's vertex index map.
+struct Simplification_visitor {
+  /// Before each collapse: `removed` disappears, `survivor` stays and moves
+  /// to `position`; `cost` is the policy's cost (sqrt(cost) is the error).
+  std::function<void(std::size_t removed, std::size_t survivor, const Eigen::Vector3d& position, double cost)>
+      on_collapse;
+  /// Now and then (every 16384 collapses) and at the end: faces left, target.
+  std::function<void(std::size_t faces, std::size_t target)> on_progress;
+};
+
+/// The options of simplify(). Stop conditions combine: the first one met wins.
+/// With no target and no .max_error, simplify() collapses until no collapse
+/// is left.
+template <class Policy = Plane_quadrics>
+struct Simplification_options {
+  std::optional<std::size_t> target_faces = std::nullopt; ///< stop at or below this many faces
+  std::optional<double> target_ratio = std::nullopt;///< stop at or below ratio × the input's faces, ratio in [0, 1]
+  /// Stop before a collapse whose error (the square root of its cost: for
+  /// plane quadrics a distance in model units) exceeds this.
+  double max_error = std::numeric_limits<double>::infinity();
+  bool max_error_relative = false; ///< .max_error is a fraction of the bounding-box diagonal
+  Policy policy = {};              ///< cost and placement
+  /// Largest turn of a face's normal in one collapse, degrees. Flipped or
+  /// degenerate faces are refused whatever this is.
+  double max_normal_deviation = 45.0;
+  Border_mode border = Border_mode::preserve;
+  double border_weight = 100.0; ///< boundary quadric weight (CGAL's GH discontinuity multiplier)
+  bool triangulate = false;     ///< triangulate polygons first instead of refusing them
+  bool check_input = true;      ///< refuse non-manifold vertices (an O(n) pass)
+  /// Vertices (by vertex index) that never move and never disappear.
+  std::function<bool(std::size_t vertex_index)> is_locked = {};
+  Simplification_visitor visitor = {};
+};
+
+/// What simplify() achieved.
+struct Simplification_result {
+  std::size_t collapses = 0;
+  std::size_t vertices = 0, edges = 0, faces = 0; ///< live counts after
+  double max_error = 0;                           ///< the largest error (sqrt of cost) of a collapse done
+  Stop_reason stop_reason = Stop_reason::no_collapse_left;
+};
+
+} // namespace genmesh
+
+#include <genmesh/simplification/detail/collapse.h>
+
+namespace genmesh {
+
+/// Simplifies g in place by edge collapses (see the top of this header).
+/// Throws genmesh::invalid_input (g untouched) on a non-triangle face (unless
+/// .triangulate), a non-finite point, a non-manifold vertex, or a target
+/// ratio outside [0, 1].
+template <detail::simplification::Simplifiable G, class Policy = Plane_quadrics>
+Simplification_result simplify(G& g, const Simplification_options<Policy>& options = {}) {
+  detail::simplification::Collapser<G, Policy> c(g, options);
+  return c.run();
+}
+
+} // namespace genmesh

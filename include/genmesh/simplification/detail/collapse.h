@@ -1,0 +1,440 @@
+// genmesh/simplification/detail/collapse.h — the collapse loop behind
+// genmesh::simplify (private; see <genmesh/simplification.h>).
+//
+// Per vertex: the policy's data (a quadric), a copy of the point in double,
+// a locked flag and a "has a refused edge" hint; per edge: the descriptor
+// and a refused flag. Collapse never adds elements, so these are vectors
+// sized once by the index bounds.
+//
+// One collapse: pop the cheapest edge; recompute its placement (the same
+// numbers as when it was queued); refuse it if a face around it would turn by
+// more than the allowed angle, flip or degenerate, or if can_collapse_edge
+// says no (link condition); else drop the edges of its triangles from the
+// queue, collapse_edge, merge the policy data into the survivor, and requeue
+// every edge of the survivor, plus the refused edges of its neighbours (their
+// fold-over test depends on the survivor's point).
+#pragma once
+
+#include <genmesh/concepts.h>
+#include <genmesh/exceptions.h>
+#include <genmesh/local_operations.h>
+#include <genmesh/point_traits.h>
+#include <genmesh/priority_queue.h>
+#include <genmesh/property_maps.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <tuple>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace genmesh::detail::simplification {
+
+/// What simplify() needs of a mesh: lists, index maps, points and the
+/// collapse operation (native or generic).
+template <class G>
+concept Simplifiable =
+    FaceListGraph<G> && EdgeListGraph<G> && VertexListGraph<G> && HasIndexMap<G, vertex_index_t> &&
+    HasIndexMap<G, edge_index_t> && HasIndexMap<G, face_index_t> && HasVertexPoints<G> &&
+    requires(G& g, const G& cg, edge_descriptor_t<G> e) {
+      genmesh::collapse_edge(e, g);
+      { genmesh::can_collapse_edge(e, cg) } -> std::convertible_to<bool>;
+    };
+
+// Queue priority: the cost, ties broken by the sorted vertex-index pair.
+struct Priority {
+  double cost;
+  std::uint64_t pair;
+  friend bool operator<(const Priority& a, const Priority& b) {
+    return a.cost < b.cost || (a.cost == b.cost && a.pair < b.pair);
+  }
+};
+
+// The normal (b − a) × (c − a) of the triangle with corners (ia, ib, ic) in
+// this cyclic order, computed from its lowest-numbered corner so that every
+// backend gets the same bits whatever corner it starts from.
+inline Eigen::Vector3d canonical_normal(std::size_t ia, const Eigen::Vector3d& a, std::size_t ib,
+                                        const Eigen::Vector3d& b, std::size_t ic, const Eigen::Vector3d& c) {
+  if (ia < ib && ia < ic) return (b - a).cross(c - a);
+  if (ib < ic) return (c - b).cross(a - b);
+  return (a - c).cross(b - c);
+}
+
+// The policy's merge and fixed placement, or the quadric defaults.
+template <class Policy, class Data>
+Data merge(const Policy& p, const Data& x, const Data& y) {
+  if constexpr (requires { p.merge(x, y); }) return p.merge(x, y);
+  else return x + y;
+}
+template <class Policy, class Data>
+Placement fixed(const Policy& p, const Data& s, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                const Eigen::Vector3d& x) {
+  if constexpr (requires { p.fixed(s, a, b, x); }) return p.fixed(s, a, b, x);
+  else return {s(x), x};
+}
+
+template <class G, class Policy>
+class Collapser {
+  using V = vertex_descriptor_t<G>;
+  using H = halfedge_descriptor_t<G>;
+  using E = edge_descriptor_t<G>;
+  using F = face_descriptor_t<G>;
+  using Data = typename Policy::Vertex_data;
+  using Options = Simplification_options<Policy>;
+
+ public:
+  Collapser(G& g, const Options& o)
+      : g_(g), o_(o), policy_(o.policy), vindex_(get(vertex_index, std::as_const(g))),
+        eindex_(get(edge_index, std::as_const(g))) {}
+
+  Simplification_result run() {
+    Simplification_result r;
+    prepare();
+    const std::size_t faces0 = faces_;
+    std::size_t target = 0;
+    if (o_.target_faces) target = *o_.target_faces;
+    if (o_.target_ratio) {
+      const double t = *o_.target_ratio;
+      if (!(t >= 0.0 && t <= 1.0))
+        throw invalid_input("simplify: target_ratio " + std::to_string(t) + " is not in [0, 1]");
+      target = std::max(target, static_cast<std::size_t>(std::ceil(t * static_cast<double>(faces0))));
+    }
+    const bool has_target = o_.target_faces || o_.target_ratio;
+    double max_error = o_.max_error;
+    if (o_.max_error_relative) max_error *= diagonal();
+    if (has_target && faces0 <= target) {
+      r.stop_reason = Stop_reason::target_already_met;
+      finish(r);
+      return r;
+    }
+    initialize();
+    for (;;) {
+      if (has_target && faces_ <= target) {
+        r.stop_reason = Stop_reason::target_faces;
+        break;
+      }
+      if (queue_.empty()) {
+        r.stop_reason = Stop_reason::no_collapse_left;
+        break;
+      }
+      const double error = std::sqrt(queue_.top_priority().cost);
+      if (error > max_error) {
+        r.stop_reason = Stop_reason::max_error;
+        break;
+      }
+      const std::size_t ei = queue_.pop();
+      if (collapse(ei)) {
+        ++r.collapses;
+        r.max_error = std::max(r.max_error, error);
+        if ((r.collapses & 16383u) == 0 && o_.visitor.on_progress) o_.visitor.on_progress(faces_, target);
+      }
+    }
+    if (o_.visitor.on_progress) o_.visitor.on_progress(faces_, target);
+    write_points();
+    finish(r);
+    return r;
+  }
+
+ private:
+  std::size_t vi(V v) const { return static_cast<std::size_t>(get(vindex_, v)); }
+  std::size_t ei(E e) const { return static_cast<std::size_t>(get(eindex_, e)); }
+  bool border(H h) const { return face(h, g_) == boost::graph_traits<G>::null_face(); }
+
+  template <class Range>
+  static std::size_t count(const Range& r) {
+    return static_cast<std::size_t>(std::distance(r.begin(), r.end()));
+  }
+
+  void finish(Simplification_result& r) const {
+    // Counted: CGAL's num_faces(Surface_mesh) is the index bound.
+    r.vertices = count(vertices(g_));
+    r.edges = count(edges(g_));
+    r.faces = count(faces(g_));
+  }
+
+  // Checks the input, triangulates if asked, reads the points.
+  void prepare() {
+    if constexpr (requires { g_.is_manifold(); }) {
+      if (o_.check_input && !g_.is_manifold())
+        throw invalid_input("simplify: the mesh is not manifold (run genmesh check; repair with --repair)");
+    }
+    std::size_t fnum = 0;
+    bool polygons = false;
+    for (const F f : faces(g_)) {
+      const H h = halfedge(f, g_);
+      if (next(next(next(h, g_), g_), g_) != h) {
+        if (!o_.triangulate)
+          throw invalid_input("simplify: face " + std::to_string(get(get(face_index, g_), f)) +
+                              " is not a triangle (set triangulate to triangulate polygons first)");
+        polygons = true;
+      }
+      ++fnum;
+    }
+    if (polygons) {
+      if constexpr (requires { genmesh::triangulate_faces(g_); }) {
+        if (genmesh::triangulate_faces(g_) != 0)
+          throw invalid_input("simplify: a polygon could not be triangulated");
+      }
+      fnum = count(faces(g_));
+    }
+    faces_ = fnum;
+    const std::size_t vb = index_bound(vertex_index, g_), eb = index_bound(edge_index, g_);
+    pos_.assign(vb, Eigen::Vector3d::Zero());
+    auto pm = get(vertex_point, g_);
+    using P = point_t<G>;
+    for (const V v : vertices(g_)) {
+      const Eigen::Vector3d p = to_eigen(P(get(pm, v)));
+      if (!p.allFinite())
+        throw invalid_input("simplify: vertex " + std::to_string(vi(v)) + " has a non-finite coordinate");
+      pos_[vi(v)] = p;
+    }
+    if (o_.check_input) check_manifold(vb, eb);
+  }
+
+  // A vertex whose fan (walked from halfedge(v)) misses some of its edges is
+  // where several fans meet: not manifold.
+  void check_manifold(std::size_t vb, std::size_t /*eb*/) {
+    std::vector<std::uint32_t> degree(vb, 0);
+    for (const E e : edges(g_)) {
+      const H h = halfedge(e, g_);
+      ++degree[vi(target(h, g_))];
+      ++degree[vi(source(h, g_))];
+    }
+    for (const V v : vertices(g_)) {
+      const H start = halfedge(v, g_);
+      if (start == boost::graph_traits<G>::null_halfedge()) continue;
+      std::uint32_t n = 0;
+      const std::uint32_t d = degree[vi(v)];
+      H x = start;
+      do {
+        ++n;
+        x = opposite(next(x, g_), g_);
+      } while (x != start && n <= d);
+      if (n != d)
+        throw invalid_input("simplify: vertex " + std::to_string(vi(v)) +
+                            " is not manifold (several fans meet there; repair with --repair)");
+    }
+  }
+
+  double diagonal() const {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const V v : vertices(g_)) {
+      lo = lo.cwiseMin(pos_[vi(v)]);
+      hi = hi.cwiseMax(pos_[vi(v)]);
+    }
+    return lo.x() <= hi.x() ? (hi - lo).norm() : 0.0;
+  }
+
+  // Policy data, locks and the queue.
+  void initialize() {
+    const std::size_t vb = pos_.size(), eb = index_bound(edge_index, g_);
+    data_.assign(vb, Data{});
+    locked_.assign(vb, 0);
+    hint_.assign(vb, 0);
+    refused_.assign(eb, 0);
+    edesc_.assign(eb, E{});
+    if (o_.is_locked)
+      for (const V v : vertices(g_))
+        if (o_.is_locked(vi(v))) locked_[vi(v)] = 1;
+    if constexpr (requires { policy_.mean_edge_length; }) {
+      double sum = 0;
+      std::size_t n = 0;
+      for (const E e : edges(g_)) {
+        const H h = halfedge(e, g_);
+        sum += (pos_[vi(target(h, g_))] - pos_[vi(source(h, g_))]).norm();
+        ++n;
+      }
+      if (n > 0 && sum > 0) policy_.mean_edge_length = sum / static_cast<double>(n);
+    }
+    // Faces in index order, corners from the lowest index: the same sums on
+    // every backend.
+    for (const F f : faces(g_)) {
+      const H h0 = halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
+      std::size_t a = vi(target(h0, g_)), b = vi(target(h1, g_)), c = vi(target(h2, g_));
+      if (b < a && b < c) {
+        std::tie(a, b, c) = std::make_tuple(b, c, a);
+      } else if (c < a && c < b) {
+        std::tie(a, b, c) = std::make_tuple(c, a, b);
+      }
+      const Data q = policy_.face(pos_[a], pos_[b], pos_[c]);
+      data_[a] = simplification::merge(policy_, data_[a], q);
+      data_[b] = simplification::merge(policy_, data_[b], q);
+      data_[c] = simplification::merge(policy_, data_[c], q);
+    }
+    for (const E e : edges(g_)) {
+      edesc_[ei(e)] = e;
+      H h = halfedge(e, g_);
+      const bool b0 = border(h), b1 = border(opposite(h, g_));
+      if (!b0 && !b1) continue;
+      if (b0) h = opposite(h, g_);
+      const std::size_t a = vi(source(h, g_)), b = vi(target(h, g_)), c = vi(target(next(h, g_), g_));
+      if (o_.border == Border_mode::lock) {
+        locked_[a] = locked_[b] = 1;
+      } else if (o_.border == Border_mode::preserve) {
+        const Data q = policy_.border(pos_[a], pos_[b], pos_[c], o_.border_weight);
+        data_[a] = simplification::merge(policy_, data_[a], q);
+        data_[b] = simplification::merge(policy_, data_[b], q);
+      }
+    }
+    const double deg = std::clamp(o_.max_normal_deviation, 0.0, 180.0);
+    cos_max_ = std::max(0.0, std::cos(deg * std::numbers::pi / 180.0));
+    queue_ = Mutable_priority_queue<Priority>(eb);
+    queue_.reserve(eb);
+    Placement pl;
+    for (const E e : edges(g_))
+      if (evaluate(halfedge(e, g_), pl)) queue_.push(ei(e), priority(halfedge(e, g_), pl.cost));
+  }
+
+  Priority priority(H h, double cost) const {
+    std::uint64_t a = vi(source(h, g_)), b = vi(target(h, g_));
+    if (a > b) std::swap(a, b);
+    return {cost, (a << 32) | b};
+  }
+
+  // The placement of collapsing h's edge; false when it may not collapse at
+  // all (both ends locked). Independent of h's direction: the ends are taken
+  // in index order.
+  bool evaluate(H h, Placement& pl) const {
+    std::size_t a = vi(source(h, g_)), b = vi(target(h, g_));
+    if (a > b) std::swap(a, b);
+    if (locked_[a] && locked_[b]) return false;
+    const Data s = simplification::merge(policy_, data_[a], data_[b]);
+    if (locked_[a]) pl = simplification::fixed(policy_, s, pos_[a], pos_[b], pos_[a]);
+    else if (locked_[b]) pl = simplification::fixed(policy_, s, pos_[a], pos_[b], pos_[b]);
+    else pl = policy_.place(s, pos_[a], pos_[b]);
+    return true;
+  }
+
+  // The vertex that survives the collapse of h's edge to x: a locked end,
+  // else the end nearer to x, else the lower index.
+  bool target_survives(H h, const Eigen::Vector3d& x) const {
+    const std::size_t p = vi(source(h, g_)), q = vi(target(h, g_));
+    if (locked_[p] != locked_[q]) return locked_[q] != 0;
+    const double dp = (pos_[p] - x).squaredNorm(), dq = (pos_[q] - x).squaredNorm();
+    if (dp != dq) return dq < dp;
+    return q < p;
+  }
+
+  // The faces around v (not those holding `other`) keep their orientation
+  // within the allowed angle and a non-zero area when v moves to x.
+  bool fan_keeps_normals(V v, V other, const Eigen::Vector3d& x) const {
+    const std::size_t iv = vi(v);
+    const H start = halfedge(v, g_);
+    H h = start;
+    do {
+      if (!border(h)) {
+        // h: b → v, next(h): v → a; the face is (v, a, b).
+        const H n = next(h, g_);
+        const V a = target(n, g_), b = source(h, g_);
+        if (a != other && b != other) {
+          const std::size_t ia = vi(a), ib = vi(b);
+          const Eigen::Vector3d n0 = canonical_normal(iv, pos_[iv], ia, pos_[ia], ib, pos_[ib]);
+          const Eigen::Vector3d n1 = canonical_normal(iv, x, ia, pos_[ia], ib, pos_[ib]);
+          const double l1 = n1.squaredNorm(), l0 = n0.squaredNorm();
+          if (!(l1 > 0)) return false;
+          if (l0 > 0) {
+            const double d = n0.dot(n1);
+            if (!(d > 0) || d * d < cos_max_ * cos_max_ * l0 * l1) return false;
+          }
+        }
+      }
+      h = opposite(next(h, g_), g_);
+    } while (h != start);
+    return true;
+  }
+
+  // Requeues the edge of h (any of its two halfedges) with a fresh cost.
+  void requeue(E e) {
+    const std::size_t k = ei(e);
+    refused_[k] = 0;
+    const H h = halfedge(e, g_);
+    Placement pl;
+    if (evaluate(h, pl)) queue_.update(k, priority(h, pl.cost));
+    else queue_.erase(k);
+  }
+
+  bool collapse(std::size_t k) {
+    const E e0 = edesc_[k];
+    H h = halfedge(e0, g_);
+    Placement pl;
+    if (!evaluate(h, pl)) return false; // never queued so
+    if (!target_survives(h, pl.position)) h = opposite(h, g_);
+    // collapse_edge(edge(h)) keeps target(h) (edge descriptors remember
+    // their halfedge on every backend).
+    const E e = edge(h, g_);
+    const H oh = opposite(h, g_);
+    const V p = source(h, g_), q = target(h, g_);
+    if (!fan_keeps_normals(p, q, pl.position) || !fan_keeps_normals(q, p, pl.position) ||
+        !genmesh::can_collapse_edge(e, std::as_const(g_))) {
+      refused_[k] = 1;
+      hint_[vi(p)] = hint_[vi(q)] = 1;
+      return false;
+    }
+    const bool top = !border(h), bottom = !border(oh);
+    if (top) {
+      queue_.erase(ei(edge(next(h, g_), g_)));
+      queue_.erase(ei(edge(prev(h, g_), g_)));
+    }
+    if (bottom) {
+      queue_.erase(ei(edge(next(oh, g_), g_)));
+      queue_.erase(ei(edge(prev(oh, g_), g_)));
+    }
+    const std::size_t ip = vi(p), iq = vi(q);
+    if (o_.visitor.on_collapse) o_.visitor.on_collapse(ip, iq, pl.position, pl.cost);
+    if (!genmesh::collapse_edge(e, g_)) return false; // can_collapse_edge said yes: never happens
+    data_[iq] = simplification::merge(policy_, data_[ip], data_[iq]);
+    pos_[iq] = pl.position;
+    faces_ -= static_cast<std::size_t>(top) + static_cast<std::size_t>(bottom);
+    // Every edge of the survivor changes cost; the refused edges of its
+    // neighbours may pass their fold-over test now.
+    const H start = halfedge(q, g_);
+    H x = start;
+    do {
+      requeue(edge(x, g_));
+      const V n = source(x, g_);
+      if (hint_[vi(n)]) {
+        hint_[vi(n)] = 0;
+        const H s2 = halfedge(n, g_);
+        H y = s2;
+        do {
+          const E ey = edge(y, g_);
+          if (refused_[ei(ey)]) requeue(ey);
+          y = opposite(next(y, g_), g_);
+        } while (y != s2);
+      }
+      x = opposite(next(x, g_), g_);
+    } while (x != start);
+    hint_[iq] = 0;
+    return true;
+  }
+
+  void write_points() {
+    auto pm = get(vertex_point, g_);
+    using P = point_t<G>;
+    for (const V v : vertices(g_)) put(pm, v, from_eigen<P>(pos_[vi(v)]));
+  }
+
+  G& g_;
+  const Options& o_;
+  Policy policy_;
+  decltype(get(vertex_index, std::declval<const G&>())) vindex_;
+  decltype(get(edge_index, std::declval<const G&>())) eindex_;
+  std::size_t faces_ = 0;
+  double cos_max_ = 0.5;
+  std::vector<Eigen::Vector3d> pos_;
+  std::vector<Data> data_;
+  std::vector<std::uint8_t> locked_, hint_, refused_;
+  std::vector<E> edesc_;
+  Mutable_priority_queue<Priority> queue_;
+};
+
+} // namespace genmesh::detail::simplification

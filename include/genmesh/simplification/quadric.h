@@ -1,0 +1,275 @@
+// genmesh/simplification/quadric.h — error quadrics and the cost/placement
+// policies of genmesh::simplify built on them.
+//
+// A quadric Q(x) = xᵀAx + 2bᵀx + c (A symmetric 3×3) measures the sum of
+// squared distances from x to a set of planes (Garland & Heckbert,
+// "Surface simplification using quadric error metrics", SIGGRAPH 1997).
+// Quadrics add, so a vertex's quadric is the sum over its faces, and a
+// collapsed vertex gets the sum of its two ends' quadrics.
+//
+// Policies (a policy is a small type; see "Writing a policy" below):
+// - Plane_quadrics: Garland–Heckbert plane quadrics, optimal placement
+//   (solve A x = −b) with the fallback described at Plane_quadrics.
+// - Probabilistic_quadrics: Trettner & Kobbelt, "Fast and robust QEF
+//   minimization using probabilistic quadrics" (Eurographics 2020), the
+//   isotropic variant: each plane's normal and point are Gaussian; A gains
+//   σ_n² I, so it is always invertible and placement needs no fallback.
+// - Edge_length: cost = squared edge length, placement at the midpoint.
+//
+// Writing a policy: a type with
+//   using Vertex_data = ...;                         // regular, default-constructible
+//   Vertex_data face(a, b, c) const;                 // a triangle's contribution to each corner
+//   Vertex_data border(a, b, c, weight) const;       // a border edge a→b of triangle (a, b, c)
+//   Placement place(const Vertex_data& sum, pa, pb) const;   // cost and position of collapsing a–b
+// and optionally (defaults: x + y, and {sum(x), x} for a callable Vertex_data)
+//   Vertex_data merge(const Vertex_data&, const Vertex_data&) const;
+//   Placement fixed(const Vertex_data& sum, pa, pb, x) const; // cost of collapsing a–b onto x
+// (points are Eigen::Vector3d; merge must be commutative bit for bit, so
+// that every backend computes the same numbers.)
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <limits>
+
+namespace genmesh {
+
+/// A symmetric error quadric Q(x) = xᵀAx + 2bᵀx + c, 10 doubles.
+struct Quadric {
+  // A = [a00 a01 a02; a01 a11 a12; a02 a12 a22]
+  double a00 = 0, a01 = 0, a02 = 0, a11 = 0, a12 = 0, a22 = 0;
+  double b0 = 0, b1 = 0, b2 = 0;
+  double c = 0;
+
+  /// w · (squared distance to the plane nᵀx + d = 0), n of unit length.
+  static Quadric plane(const Eigen::Vector3d& n, double d, double w = 1.0) {
+    Quadric q;
+    q.a00 = w * n.x() * n.x();
+    q.a01 = w * n.x() * n.y();
+    q.a02 = w * n.x() * n.z();
+    q.a11 = w * n.y() * n.y();
+    q.a12 = w * n.y() * n.z();
+    q.a22 = w * n.z() * n.z();
+    q.b0 = w * d * n.x();
+    q.b1 = w * d * n.y();
+    q.b2 = w * d * n.z();
+    q.c = w * d * d;
+    return q;
+  }
+
+  /// The probabilistic plane quadric of Trettner & Kobbelt 2020 (isotropic):
+  /// the expected squared distance to the plane through p with normal n when
+  /// p ~ N(p, σ_p² I) and n ~ N(n, σ_n² I). Times w.
+  static Quadric probabilistic_plane(const Eigen::Vector3d& n, const Eigen::Vector3d& p, double sigma_p,
+                                     double sigma_n, double w = 1.0) {
+    const double sn2 = sigma_n * sigma_n, sp2 = sigma_p * sigma_p;
+    const double d = -n.dot(p);
+    Quadric q = plane(n, d, 1.0);
+    q.a00 += sn2;
+    q.a11 += sn2;
+    q.a22 += sn2;
+    q.b0 -= sn2 * p.x();
+    q.b1 -= sn2 * p.y();
+    q.b2 -= sn2 * p.z();
+    q.c += sn2 * p.squaredNorm() + sp2 * n.squaredNorm() + 3.0 * sn2 * sp2;
+    q *= w;
+    return q;
+  }
+
+  Quadric& operator+=(const Quadric& o) {
+    a00 += o.a00; a01 += o.a01; a02 += o.a02; a11 += o.a11; a12 += o.a12; a22 += o.a22;
+    b0 += o.b0; b1 += o.b1; b2 += o.b2;
+    c += o.c;
+    return *this;
+  }
+  Quadric& operator*=(double w) {
+    a00 *= w; a01 *= w; a02 *= w; a11 *= w; a12 *= w; a22 *= w;
+    b0 *= w; b1 *= w; b2 *= w;
+    c *= w;
+    return *this;
+  }
+  friend Quadric operator+(Quadric a, const Quadric& b) { return a += b; }
+
+  /// Q(x), clamped at 0 (rounding can make it slightly negative).
+  double operator()(const Eigen::Vector3d& x) const {
+    const double ax = a00 * x.x() + a01 * x.y() + a02 * x.z();
+    const double ay = a01 * x.x() + a11 * x.y() + a12 * x.z();
+    const double az = a02 * x.x() + a12 * x.y() + a22 * x.z();
+    const double v = x.x() * (ax + 2 * b0) + x.y() * (ay + 2 * b1) + x.z() * (az + 2 * b2) + c;
+    return v > 0 ? v : 0.0;
+  }
+
+  /// The minimizer of Q, if A is well conditioned: |det A| must exceed
+  /// `tolerance` times the product of A's row norms (Hadamard's bound, so the
+  /// test does not depend on the scale of the mesh). False if it does not.
+  bool minimizer(Eigen::Vector3d& x, double tolerance) const {
+    const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
+    const double det = a00 * c00 + a01 * c01 + a02 * c02;
+    const double r0 = a00 * a00 + a01 * a01 + a02 * a02, r1 = a01 * a01 + a11 * a11 + a12 * a12,
+                 r2 = a02 * a02 + a12 * a12 + a22 * a22;
+    if (!(std::abs(det) > tolerance * std::sqrt(r0 * r1 * r2))) return false;
+    const double c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
+    const double inv = 1.0 / det;
+    x.x() = -(c00 * b0 + c01 * b1 + c02 * b2) * inv;
+    x.y() = -(c01 * b0 + c11 * b1 + c12 * b2) * inv;
+    x.z() = -(c02 * b0 + c12 * b1 + c22 * b2) * inv;
+    return std::isfinite(x.x()) && std::isfinite(x.y()) && std::isfinite(x.z());
+  }
+};
+
+/// Where a collapse puts the surviving vertex and what it costs there.
+struct Placement {
+  double cost = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+};
+
+namespace detail::simplification {
+
+// The quadric of triangle (a, b, c): its supporting plane, unit normal,
+// weighted by area·area_factor + (1 − area_factor) (area_factor 0 or 1).
+// Degenerate triangles contribute nothing.
+inline Quadric triangle_plane(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                              bool area_weighted) {
+  Eigen::Vector3d n = (b - a).cross(c - a);
+  const double len = n.norm();
+  if (!(len > 0)) return {};
+  n /= len;
+  return Quadric::plane(n, -n.dot(a), area_weighted ? 0.5 * len : 1.0);
+}
+
+// The plane through border edge a→b perpendicular to triangle (a, b, c).
+inline Quadric border_plane(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                            double weight, bool area_weighted) {
+  const Eigen::Vector3d e = b - a;
+  const Eigen::Vector3d fn = e.cross(c - a);
+  Eigen::Vector3d n = e.cross(fn);
+  const double len = n.norm();
+  if (!(len > 0)) return {};
+  n /= len;
+  // Area weighting: as a face of the edge's length squared, so that the
+  // border term keeps its relative strength in both modes.
+  return Quadric::plane(n, -n.dot(a), weight * (area_weighted ? e.squaredNorm() : 1.0));
+}
+
+// The best of the endpoints, the midpoint and the minimizer of q on the
+// segment (ties: a, then b, then the midpoint, then the segment's).
+template <class Q>
+Placement best_of_ends(const Q& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  Placement r{q(a), a};
+  const double cb = q(b);
+  if (cb < r.cost) r = {cb, b};
+  const Eigen::Vector3d m = 0.5 * (a + b);
+  const double cm = q(m);
+  if (cm < r.cost) r = {cm, m};
+  if constexpr (requires { q.a00; }) {
+    // Q(a + t d) = t² dᵀAd + 2t dᵀ(Aa + b) + Q(a): the minimum at t = −dᵀ(Aa + b) / dᵀAd.
+    const Eigen::Vector3d d = b - a;
+    const Eigen::Vector3d ad(q.a00 * d.x() + q.a01 * d.y() + q.a02 * d.z(), q.a01 * d.x() + q.a11 * d.y() + q.a12 * d.z(),
+                             q.a02 * d.x() + q.a12 * d.y() + q.a22 * d.z());
+    const double dad = d.dot(ad);
+    if (dad > 0) {
+      const double g = ad.dot(a) + q.b0 * d.x() + q.b1 * d.y() + q.b2 * d.z();
+      const double t = -g / dad;
+      if (t > 0 && t < 1) {
+        const Eigen::Vector3d x = a + t * d;
+        const double cx = q(x);
+        if (cx < r.cost) r = {cx, x};
+      }
+    }
+  }
+  return r;
+}
+
+} // namespace detail::simplification
+
+/// Garland–Heckbert plane quadrics (1997): each triangle contributes the
+/// squared distance to its plane to its three corners; a collapse goes to
+/// the minimizer of the summed quadric. When A is ill conditioned — |det A|
+/// ≤ `conditioning` × ‖row₀‖‖row₁‖‖row₂‖ (flat or creased neighbourhoods,
+/// where the minimizer is a plane or a line) — or the minimizer lies farther
+/// than `max_distance_factor` edge lengths from the edge's midpoint, the
+/// collapse goes to the best of the two endpoints and the midpoint instead.
+/// The error reported is sqrt(Q(x)) (unweighted: a distance, the root of a
+/// sum of squared distances to the original planes).
+struct Plane_quadrics {
+  /// Weight each plane by its triangle's area (then the cost is an area
+  /// times a squared distance; .max_error compares its square root anyway).
+  bool area_weighted = false;
+  /// The conditioning threshold on the Hadamard ratio |det A| / ∏‖rowᵢ‖ ∈ [0, 1].
+  double conditioning = 1e-6;
+  /// The optimal point may be at most this many edge lengths from the midpoint.
+  double max_distance_factor = 2.0;
+
+  using Vertex_data = Quadric;
+
+  Quadric face(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) const {
+    return detail::simplification::triangle_plane(a, b, c, area_weighted);
+  }
+  Quadric border(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                 double weight) const {
+    return detail::simplification::border_plane(a, b, c, weight, area_weighted);
+  }
+  Placement place(const Quadric& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+    Eigen::Vector3d x;
+    if (q.minimizer(x, conditioning)) {
+      const Eigen::Vector3d m = 0.5 * (a + b);
+      const double limit = max_distance_factor * max_distance_factor * (b - a).squaredNorm();
+      if ((x - m).squaredNorm() <= limit) return {q(x), x};
+    }
+    return detail::simplification::best_of_ends(q, a, b);
+  }
+};
+
+/// Probabilistic plane quadrics (Trettner & Kobbelt 2020, isotropic
+/// Gaussian noise on each plane's point and normal). A = Σ(nnᵀ + σ_n² I) is
+/// positive definite, so the minimizer always exists and is unique; it
+/// stays close to the edge in flat regions where plane quadrics have none.
+/// σ_p and σ_n are relative: σ_p = position_sigma × the mean edge length of
+/// the input (set by simplify before the first face), σ_n = normal_sigma.
+struct Probabilistic_quadrics {
+  double position_sigma = 0.05; ///< × the input's mean edge length
+  double normal_sigma = 0.05;   ///< radians, roughly: the normals' standard deviation
+  bool area_weighted = false;
+  double mean_edge_length = 1.0; ///< set by simplify from the input
+
+  using Vertex_data = Quadric;
+
+  Quadric face(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) const {
+    Eigen::Vector3d n = (b - a).cross(c - a);
+    const double len = n.norm();
+    if (!(len > 0)) return {};
+    n /= len;
+    return Quadric::probabilistic_plane(n, (a + b + c) / 3.0, position_sigma * mean_edge_length, normal_sigma,
+                                        area_weighted ? 0.5 * len : 1.0);
+  }
+  Quadric border(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                 double weight) const {
+    return detail::simplification::border_plane(a, b, c, weight, area_weighted);
+  }
+  Placement place(const Quadric& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+    Eigen::Vector3d x;
+    if (q.minimizer(x, 1e-12)) return {q(x), x};
+    return detail::simplification::best_of_ends(q, a, b);
+  }
+};
+
+/// The shortest edge first, collapsed to its midpoint (cost: squared length).
+/// Fast and shape-blind: a baseline, and the policy of uniform coarsening.
+struct Edge_length {
+  struct Vertex_data {};
+  Vertex_data face(const Eigen::Vector3d&, const Eigen::Vector3d&, const Eigen::Vector3d&) const { return {}; }
+  Vertex_data border(const Eigen::Vector3d&, const Eigen::Vector3d&, const Eigen::Vector3d&, double) const {
+    return {};
+  }
+  Vertex_data merge(const Vertex_data&, const Vertex_data&) const { return {}; }
+  Placement place(const Vertex_data&, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+    return {(b - a).squaredNorm(), 0.5 * (a + b)};
+  }
+  Placement fixed(const Vertex_data&, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                  const Eigen::Vector3d& x) const {
+    return {(b - a).squaredNorm(), x};
+  }
+};
+
+} // namespace genmesh
