@@ -67,6 +67,7 @@ Remeshing_result isotropic_remeshing(G& g, const Remeshing_options& options = {}
       r.equalize_valences();
     r.tangential_relaxation();
     r.project();
+    r.remove_bad_triangles();
     ++r.result().iterations;
   }
   r.finish();

@@ -9,9 +9,11 @@
 
 namespace genmesh {
 
-/// How tangential_relaxation moves a free vertex: towards the area-weighted
-/// centroid of its triangles, towards the plain mean of its neighbours, or not
-/// at all; the move is projected onto the vertex's tangent plane.
+/// How tangential_relaxation moves a free vertex, always within its tangent
+/// plane: area_weighted goes to the point that minimizes the sum of the
+/// squared areas of its triangles (pmp-library's rule; where that 3x3 system
+/// is singular, the area-weighted centroid of its triangles); uniform to the
+/// mean of its neighbours; none does not move it.
 enum class Smoothing { area_weighted, uniform, none };
 
 /// What the flip step optimizes: valences towards 6 (4 on the border), or
@@ -51,7 +53,7 @@ struct Remeshing_options {
   int iterations = 5;
   /// Tangential smoothing rule, steps per round and step size (0, 1].
   Smoothing smoothing = Smoothing::area_weighted;
-  int smoothing_steps = 3;
+  int smoothing_steps = 4;
   double smoothing_step_size = 1.0;
   /// Project every moved vertex back onto the input surface after each round.
   bool projection = true;

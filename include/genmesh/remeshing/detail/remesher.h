@@ -33,6 +33,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 
 #include <cmath>
 #include <cstddef>
@@ -223,7 +224,15 @@ public:
         };
         const int before = dev(v0, 0) + dev(v1, 0) + dev(v2, 0) + dev(v3, 0);
         const int after = dev(v0, -1) + dev(v1, -1) + dev(v2, 1) + dev(v3, 1);
-        if (after >= before) continue;
+        if (after > before) continue;
+        if (after == before) {
+          // Equal deviation: flip only to a clearly better pair of angles.
+          const Eigen::Vector3d q0 = pt(target(h, g_)), q1 = pt(target(oh, g_));
+          const Eigen::Vector3d q2 = pt(target(next(h, g_), g_)), q3 = pt(target(next(oh, g_), g_));
+          const double c_before = std::max(max_cos(q1, q0, q2), max_cos(q0, q1, q3));
+          const double c_after = std::max(max_cos(q0, q2, q3), max_cos(q2, q1, q3));
+          if (!(c_after < c_before - 0.05)) continue;
+        }
         if (!flip_keeps_orientation(h) || !genmesh::can_flip_edge(h, std::as_const(g_))) continue;
         genmesh::flip_edge(h, g_);
         --val[v0], --val[v1], ++val[v2], ++val[v3];
@@ -244,6 +253,38 @@ public:
       std::size_t flipped = 0;
       for (const H h : hs) {
         if (!delaunay_flippable(h)) continue;
+        genmesh::flip_edge(h, g_);
+        ++flipped;
+      }
+      n += flipped;
+      if (flipped == 0) break;
+    }
+    result_.flips += n;
+    return n;
+  }
+
+  /// Flips free inner edges of triangles with an angle below 30° where the
+  /// flip raises the smaller of the two triangles' smallest angles and keeps
+  /// orientation (caps and slivers that the valence flips and smoothing left;
+  /// pmp-library's remove_caps, widened). Two passes.
+  std::size_t remove_bad_triangles() {
+    const double bad = std::cos(30.0 * std::numbers::pi / 180.0); // cos of the smallest angle we keep
+    std::size_t n = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+      std::size_t flipped = 0;
+      for (auto e : edges(g_)) {
+        const H h = halfedge(e, g_);
+        if (eflag(h) & (e_constrained | e_fixed)) continue;
+        const H oh = opposite(h, g_);
+        if (is_border(h) || is_border(oh)) continue;
+        const Eigen::Vector3d p0 = pt(target(h, g_)), p1 = pt(target(oh, g_));
+        const Eigen::Vector3d p2 = pt(target(next(h, g_), g_)), p3 = pt(target(next(oh, g_), g_));
+        // Largest cosine of the angles of (p1, p0, p2) and (p0, p1, p3), then of the flipped pair.
+        const double before = std::max(max_cos(p1, p0, p2), max_cos(p0, p1, p3));
+        if (!(before > bad)) continue;
+        const double after = std::max(max_cos(p0, p2, p3), max_cos(p2, p1, p3));
+        if (!(after < before - 1e-9)) continue;
+        if (!flip_keeps_orientation(h) || !genmesh::can_flip_edge(h, std::as_const(g_))) continue;
         genmesh::flip_edge(h, g_);
         ++flipped;
       }
@@ -304,6 +345,7 @@ public:
     std::vector<Eigen::Vector3d> moved(free.size());
     const double lambda = o_.smoothing_step_size;
     const bool uniform = o_.smoothing == Smoothing::uniform;
+    const bool squared_areas = o_.smoothing == Smoothing::area_weighted;
     for (int step = 0; step < o_.smoothing_steps; ++step) {
       for (std::size_t i = 0; i < free.size(); ++i) {
         const Eigen::Vector3d p = pos[free_id[i]];
@@ -326,6 +368,24 @@ public:
           }
         }
         Eigen::Vector3d u = weight > 0 ? Eigen::Vector3d(sum / weight - p) : Eigen::Vector3d::Zero();
+        if (squared_areas) {
+          // The point minimizing the sum of the squared areas of v's
+          // triangles (pmp-library's rule), if the system is well posed.
+          Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+          Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+          for (std::uint32_t j = 0; j < k; ++j) {
+            const Eigen::Vector3d& a = pos[ring[b + j]];
+            const Eigen::Vector3d d = pos[ring[b + (j + 1 == k ? 0 : j + 1)]] - a;
+            const double l2 = d.squaredNorm();
+            if (!(l2 > 0)) continue;
+            const Eigen::Matrix3d D = l2 * Eigen::Matrix3d::Identity() - d * d.transpose();
+            const double w = 1.0 / std::sqrt(l2);
+            A += w * D;
+            rhs += w * (D * a);
+          }
+          const double det = A.determinant(), scale = A.norm();
+          if (std::abs(det) > 1e-12 * scale * scale * scale) u = A.inverse() * rhs - p;
+        }
         const double nn = normal.squaredNorm();
         if (nn > 0) u -= normal * (u.dot(normal) / nn);
         moved[i] = p + lambda * u;
@@ -452,6 +512,15 @@ private:
     const std::uint8_t f = eflag(h);
     if (f & e_fixed) return false;
     return !(f & e_constrained) || o_.constraints == Constraints::resample;
+  }
+
+  /// The largest cosine of triangle (a, b, c)'s angles (its smallest angle's).
+  static double max_cos(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+    auto cosine = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+      const double d = std::sqrt(u.squaredNorm() * v.squaredNorm());
+      return d > 0 ? u.dot(v) / d : 1.0;
+    };
+    return std::max({cosine(b - a, c - a), cosine(a - b, c - b), cosine(a - c, b - c)});
   }
 
   /// Whether flipping h keeps the two triangles oriented as before (no fold,
