@@ -383,33 +383,6 @@ TYPED_TEST(Remeshing, CubeKeepsStraightFeatureEdgesAndCorners) {
   EXPECT_GT(after.num_faces(), 100u);
 }
 
-TYPED_TEST(Remeshing, PatchKeepsItsBorderAndTheOutside) {
-  const Polygon_soup grid = genmesh::make_grid(10, 10);
-  genmesh::Remeshing_options o{.target_edge_length = 0.04, .iterations = 3};
-  o.faces.assign(grid.num_faces(), 0);
-  for (std::size_t f = 0; f < grid.num_faces() / 2; ++f) o.faces[f] = 1;
-  auto g = mesh_of<TypeParam>(grid);
-  genmesh::isotropic_remeshing(g, o);
-  const Polygon_soup after = genmesh::to_soup(g);
-  EXPECT_GT(after.num_faces(), grid.num_faces());
-  // The faces outside the patch are still there, same corners, same points.
-  std::set<std::vector<double>> outside_after;
-  for (std::size_t f = 0; f < after.num_faces(); ++f) {
-    std::vector<double> key;
-    for (auto v : after.face(f)) key.insert(key.end(), {after.points[v].x(), after.points[v].y(), after.points[v].z()});
-    outside_after.insert(key);
-  }
-  const Polygon_soup rotated = genmesh::rotate_faces_to_lowest(grid);
-  for (std::size_t f = grid.num_faces() / 2; f < grid.num_faces(); ++f) {
-    std::vector<double> key;
-    for (auto v : rotated.face(f)) key.insert(key.end(), {grid.points[v].x(), grid.points[v].y(), grid.points[v].z()});
-    EXPECT_TRUE(outside_after.count(key)) << "outside face " << f << " changed";
-  }
-  // Every vertex stays in the plane of the grid; the mesh border keeps its loop.
-  for (const auto& p : after.points) EXPECT_EQ(p.z(), grid.points[0].z());
-  EXPECT_EQ(genmesh::check_mesh(g).boundary_loops, 1u);
-}
-
 /// CGAL's PMP::isotropic_remeshing on the same input and target: genmesh's
 /// edge lengths are in the same band, its angles and valences no worse,
 /// its distance to the input no worse (margins stated in each line).
