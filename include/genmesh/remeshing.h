@@ -1,0 +1,77 @@
+// genmesh/remeshing.h — isotropic remeshing of triangle meshes.
+//
+// isotropic_remeshing(g, {options}) repeats, options.iterations times, the
+// loop of Botsch & Kobbelt ("A remeshing approach to multiresolution
+// modeling", SGP 2004): split every edge longer than 4/3 L at its midpoint;
+// collapse every edge shorter than 4/5 L where no edge longer than 4/3 L
+// appears and no triangle turns over; flip edges to bring valences towards 6
+// (4 on the border) — or, with Flips::delaunay, until every free edge is
+// locally Delaunay; move the free vertices tangentially (area-weighted
+// centroid, or uniform); project them back onto the input surface.
+// Each step is usable alone: <genmesh/remeshing/split_long_edges.h>,
+// collapse_short_edges.h, equalize_valences.h, make_delaunay.h,
+// tangential_relaxation.h.
+//
+// Guarantees:
+// - Refusals before any change (genmesh::invalid_input naming the element):
+//   a target length that is zero, negative, infinite or NaN; a non-manifold
+//   vertex; an edge without faces; a polygon with Polygons::refuse (with
+//   Polygons::triangulate, the default, polygons are triangulated first).
+// - Every step keeps a valid manifold triangle mesh: it changes g only
+//   through the checked local operations (split_edge_and_triangulate,
+//   collapse_edge with the link condition, flip_edge). Borders keep their
+//   loops; genus and components are kept.
+// - Constrained edges (the border, feature edges above .feature_angle,
+//   .constrained_edges, the border of a .faces patch) are never flipped or
+//   collapsed across, their vertices never leave them; with
+//   Constraints::resample (default) they are split at midpoints and
+//   collapsed along themselves with corners (vertices with 1 or 3+
+//   constrained edges) fixed; with Constraints::protect they are untouched.
+// - Projection: each round ends by moving every vertex that may move to a
+//   closest point of a copy of the input (detail/reference_surface.h), so
+//   every vertex lies on the input surface.
+// - Deterministic: the same input gives the same mesh (same canonical soup)
+//   on Halfedge_mesh, CGAL::Surface_mesh and Incidence_mesh (its native
+//   operations; never a copy). See detail/remesher.h for how, and for the
+//   bound on every loop.
+// Limits: triangles only after the optional triangulation; projection finds
+// a local minimum of the distance by walking from the previous face (the
+// global one on smooth inputs, not guaranteed across thin folds); adaptive
+// sizing is pmp-library's rule; garbage (removed elements) is left in g, as
+// the local operations leave it.
+#pragma once
+
+#include <genmesh/remeshing/collapse_short_edges.h>
+#include <genmesh/remeshing/equalize_valences.h>
+#include <genmesh/remeshing/make_delaunay.h>
+#include <genmesh/remeshing/options.h>
+#include <genmesh/remeshing/split_long_edges.h>
+#include <genmesh/remeshing/tangential_relaxation.h>
+
+namespace genmesh {
+
+/// Remeshes the triangle mesh g in place towards edges of length L
+/// (options.target_edge_length, or options.relative_edge_length times the
+/// mean edge length). Returns what was done. Throws genmesh::invalid_input
+/// (g unchanged) on the refusals listed at the top of this header.
+template <detail::remeshing::Remeshable G>
+Remeshing_result isotropic_remeshing(G& g, const Remeshing_options& options = {}) {
+  detail::remeshing::Remesher<G> r(g, options, "isotropic_remeshing");
+  if (options.projection) r.build_reference();
+  for (int i = 0; i < options.iterations; ++i) {
+    r.split_long_edges();
+    r.collapse_short_edges();
+    if (options.flips == Flips::delaunay)
+      r.make_delaunay();
+    else
+      r.equalize_valences();
+    r.tangential_relaxation();
+    r.project();
+    r.remove_bad_triangles();
+    ++r.result().iterations;
+  }
+  r.finish();
+  return r.result();
+}
+
+} // namespace genmesh

@@ -1,0 +1,779 @@
+// genmesh/remeshing/detail/remesher.h — the state shared by the remeshing
+// steps (target lengths, constraint flags, projection hints) and the steps
+// themselves. Public entry points: <genmesh/remeshing.h> and the step
+// headers beside it.
+//
+// Determinism: every decision reads element indices (get(*_index, g)),
+// positions and counts only; edges are visited in edges(g) order or from
+// heaps ordered by (squared length, edge index); rings around a vertex start
+// at its border halfedge, else at the halfedge of its lowest-numbered edge;
+// triangles are evaluated from a fixed corner. halfedge(v, g) and
+// halfedge(f, g), which backends choose differently, are never a start.
+// All backends allocate element indices identically, so the same input gives
+// the same mesh everywhere.
+//
+// Termination: every loop has a bound. Splits: a heap of long edges with a
+// budget of 4 E + 4 Σ ⌈ℓ/L⌉ + 64 splits per call. Collapses: each removes a
+// vertex, and an edge is re-queued only after a collapse at one of its ends.
+// Flips (valence): at most 10 passes, each flip lowers the integer valence
+// deviation. Flips (Delaunay): at most 50 passes. Smoothing: fixed steps.
+// Projection walks: at most 256 faces.
+#pragma once
+
+#include <genmesh/concepts.h>
+#include <genmesh/exceptions.h>
+#include <genmesh/local_operations.h>
+#include <genmesh/point_traits.h>
+#include <genmesh/property_maps.h>
+#include <genmesh/remeshing/detail/reference_surface.h>
+#include <genmesh/remeshing/options.h>
+
+#include <boost/container/small_vector.hpp>
+#include <boost/graph/graph_traits.hpp>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <queue>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace genmesh {
+
+namespace detail::remeshing {
+
+/// What the remeshing steps need of a mesh: face lists, points, dense
+/// indices, and the local operations split_edge_and_triangulate,
+/// collapse_edge, flip_edge and triangulate_faces.
+template <class G>
+concept Remeshable = FaceListGraph<G> && EdgeListGraph<G> && VertexListGraph<G> && HalfedgeListGraph<G> &&
+                     HasVertexPoints<G> && HasIndexMap<G, vertex_index_t> && HasIndexMap<G, edge_index_t> &&
+                     HasIndexMap<G, face_index_t> &&
+                     requires(G& g, halfedge_descriptor_t<G> h, edge_descriptor_t<G> e) {
+                       genmesh::split_edge_and_triangulate(h, g);
+                       genmesh::collapse_edge(e, g);
+                       genmesh::can_flip_edge(h, std::as_const(g));
+                       genmesh::flip_edge(h, g);
+                       genmesh::triangulate_faces(g);
+                     };
+
+// Vertex flags.
+inline constexpr std::uint8_t v_constrained = 1; // on a constrained edge
+inline constexpr std::uint8_t v_fixed = 2;       // never moved, never removed (corner, protected, outside the patch)
+// Edge flags.
+inline constexpr std::uint8_t e_constrained = 1; // border, feature, user constrained, patch border
+inline constexpr std::uint8_t e_fixed = 2;       // never split, collapsed or flipped
+
+template <Remeshable G>
+class Remesher {
+public:
+  using V = vertex_descriptor_t<G>;
+  using H = halfedge_descriptor_t<G>;
+  using E = edge_descriptor_t<G>;
+  using F = face_descriptor_t<G>;
+  using Ring = boost::container::small_vector<H, 16>;
+
+  Remesher(G& g, const Remeshing_options& o, const char* who)
+      : g_(g), o_(o), who_(who), pm_(get(vertex_point, g)), vi_(get(vertex_index, g)), ei_(get(edge_index, g)),
+        fi_(get(face_index, g)) {
+    check_options();
+    prepare_faces();
+    check_manifold();
+    set_length();
+    set_flags();
+  }
+
+  Remesher(const Remesher&) = delete;
+  Remesher& operator=(const Remesher&) = delete;
+
+  Remeshing_result& result() { return result_; }
+  double target_length() const { return L_; }
+
+  /// Builds the reference surface (a copy of the current mesh) and the hints.
+  void build_reference() {
+    ref_ = std::make_unique<Reference_surface>(g_);
+    hint_.assign(index_bound(vertex_index, g_), k_none);
+    for (auto v : vertices(g_)) hint_[vid(v)] = ref_->face_of_vertex(vid(v));
+  }
+
+  // -------------------------------------------------------------------------
+  // split_long_edges
+  // -------------------------------------------------------------------------
+
+  std::size_t split_long_edges() {
+    struct Entry {
+      double len2;
+      std::uint32_t idx;
+      H h;
+      bool operator<(const Entry& o) const { return len2 < o.len2 || (len2 == o.len2 && idx > o.idx); }
+    };
+    std::priority_queue<Entry> heap;
+    double budget = 64;
+    for (auto e : edges(g_)) {
+      const H h = halfedge(e, g_);
+      const double l2 = len2(h);
+      budget += 4 + 4 * std::ceil(std::sqrt(l2) / min_length_bound());
+      if (splittable(h) && l2 > hi2(h)) heap.push({l2, eid(h), h});
+    }
+    std::size_t n = 0;
+    while (!heap.empty() && static_cast<double>(n) < budget) {
+      const Entry top = heap.top();
+      heap.pop();
+      if (len2(top.h) != top.len2) continue; // split since
+      const H h = top.h;
+      const bool constrained = eflag(h) & e_constrained;
+      const V u = source(h, g_);
+      const auto hnew = genmesh::split_edge_and_triangulate(h, g_);
+      if (!hnew) continue;
+      ++n;
+      const V w = target(*hnew, g_);
+      grow();
+      vflag_[vid(w)] = constrained ? v_constrained : 0;
+      eflag_[eid(*hnew)] = constrained ? e_constrained : 0;
+      hint_at(w) = hint_at(u);
+      if (!sizing_.empty()) sizing_[vid(w)] = 0.5 * (sizing_[vid(u)] + sizing_[vid(target(h, g_))]);
+      for_each_in_any_order(w, [&](H x) {
+        if (eid(x) >= eflag_.size()) grow();
+        const double l2 = len2(x);
+        if (splittable(x) && l2 > hi2(x)) heap.push({l2, eid(x), x});
+      });
+    }
+    result_.splits += n;
+    return n;
+  }
+
+  // -------------------------------------------------------------------------
+  // collapse_short_edges
+  // -------------------------------------------------------------------------
+
+  std::size_t collapse_short_edges() {
+    struct Entry {
+      double len2;
+      std::uint32_t idx;
+      std::uint32_t stamp;
+      H h;
+      bool operator<(const Entry& o) const { return len2 > o.len2 || (len2 == o.len2 && idx > o.idx); }
+    };
+    grow();
+    std::vector<std::uint32_t> stamp(eflag_.size(), 0);
+    std::priority_queue<Entry> heap;
+    for (auto e : edges(g_)) {
+      const H h = halfedge(e, g_);
+      if (eflag(h) & e_fixed) continue;
+      const double l2 = len2(h);
+      if (l2 < lo2(h)) heap.push({l2, eid(h), 0, h});
+    }
+    std::size_t n = 0;
+    while (!heap.empty()) {
+      const Entry top = heap.top();
+      heap.pop();
+      if (stamp[top.idx] != top.stamp) continue;
+      const auto survivor = try_collapse(top.h, stamp);
+      if (!survivor) continue;
+      ++n;
+      for_each_in_any_order(*survivor, [&](H x) {
+        const std::uint32_t i = eid(x);
+        ++stamp[i];
+        if (eflag(x) & e_fixed) return;
+        const double l2 = len2(x);
+        if (l2 < lo2(x)) heap.push({l2, i, stamp[i], x});
+      });
+    }
+    result_.collapses += n;
+    return n;
+  }
+
+  // -------------------------------------------------------------------------
+  // equalize_valences, make_delaunay
+  // -------------------------------------------------------------------------
+
+  std::size_t equalize_valences() {
+    std::vector<int> val(index_bound(vertex_index, g_), 0), opt(val.size(), 6);
+    for (auto v : vertices(g_)) {
+      int n = 0;
+      bool border = false;
+      for_each_in_any_order(v, [&](H x) {
+        ++n;
+        border = border || is_border(x);
+      });
+      val[vid(v)] = n;
+      opt[vid(v)] = border ? 4 : 6;
+    }
+    std::vector<H> hs;
+    for (auto e : edges(g_)) hs.push_back(halfedge(e, g_));
+    std::size_t n = 0;
+    for (int pass = 0; pass < 10; ++pass) {
+      std::size_t flipped = 0;
+      for (const H h : hs) {
+        if (eflag(h) & (e_constrained | e_fixed)) continue;
+        const H oh = opposite(h, g_);
+        if (is_border(h) || is_border(oh)) continue;
+        const std::size_t v0 = vid(target(h, g_)), v1 = vid(target(oh, g_));
+        const std::size_t v2 = vid(target(next(h, g_), g_)), v3 = vid(target(next(oh, g_), g_));
+        auto dev = [&](std::size_t v, int d) {
+          const int x = val[v] + d - opt[v];
+          return x * x;
+        };
+        const int before = dev(v0, 0) + dev(v1, 0) + dev(v2, 0) + dev(v3, 0);
+        const int after = dev(v0, -1) + dev(v1, -1) + dev(v2, 1) + dev(v3, 1);
+        if (after > before) continue;
+        if (after == before) {
+          // Equal deviation: flip only to a clearly better pair of angles.
+          const Eigen::Vector3d q0 = pt(target(h, g_)), q1 = pt(target(oh, g_));
+          const Eigen::Vector3d q2 = pt(target(next(h, g_), g_)), q3 = pt(target(next(oh, g_), g_));
+          const double c_before = std::max(max_cos(q1, q0, q2), max_cos(q0, q1, q3));
+          const double c_after = std::max(max_cos(q0, q2, q3), max_cos(q2, q1, q3));
+          if (!(c_after < c_before - 0.05)) continue;
+        }
+        if (!flip_keeps_orientation(h) || !genmesh::can_flip_edge(h, std::as_const(g_))) continue;
+        genmesh::flip_edge(h, g_);
+        --val[v0], --val[v1], ++val[v2], ++val[v3];
+        ++flipped;
+      }
+      n += flipped;
+      if (flipped == 0) break;
+    }
+    result_.flips += n;
+    return n;
+  }
+
+  std::size_t make_delaunay() {
+    std::vector<H> hs;
+    for (auto e : edges(g_)) hs.push_back(halfedge(e, g_));
+    std::size_t n = 0;
+    for (int pass = 0; pass < 50; ++pass) {
+      std::size_t flipped = 0;
+      for (const H h : hs) {
+        if (!delaunay_flippable(h)) continue;
+        genmesh::flip_edge(h, g_);
+        ++flipped;
+      }
+      n += flipped;
+      if (flipped == 0) break;
+    }
+    result_.flips += n;
+    return n;
+  }
+
+  /// Flips free inner edges of triangles with an angle below 30° where the
+  /// flip raises the smaller of the two triangles' smallest angles and keeps
+  /// orientation (caps and slivers that the valence flips and smoothing left;
+  /// pmp-library's remove_caps, widened). Two passes.
+  std::size_t remove_bad_triangles() {
+    const double bad = std::cos(30.0 * std::numbers::pi / 180.0); // cos of the smallest angle we keep
+    std::size_t n = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+      std::size_t flipped = 0;
+      for (auto e : edges(g_)) {
+        const H h = halfedge(e, g_);
+        if (eflag(h) & (e_constrained | e_fixed)) continue;
+        const H oh = opposite(h, g_);
+        if (is_border(h) || is_border(oh)) continue;
+        const Eigen::Vector3d p0 = pt(target(h, g_)), p1 = pt(target(oh, g_));
+        const Eigen::Vector3d p2 = pt(target(next(h, g_), g_)), p3 = pt(target(next(oh, g_), g_));
+        // Largest cosine of the angles of (p1, p0, p2) and (p0, p1, p3), then of the flipped pair.
+        const double before = std::max(max_cos(p1, p0, p2), max_cos(p0, p1, p3));
+        if (!(before > bad)) continue;
+        const double after = std::max(max_cos(p0, p2, p3), max_cos(p2, p1, p3));
+        if (!(after < before - 1e-9)) continue;
+        if (!flip_keeps_orientation(h) || !genmesh::can_flip_edge(h, std::as_const(g_))) continue;
+        genmesh::flip_edge(h, g_);
+        ++flipped;
+      }
+      n += flipped;
+      if (flipped == 0) break;
+    }
+    result_.flips += n;
+    return n;
+  }
+
+  /// Whether make_delaunay would flip h: a free inner edge whose opposite
+  /// angles sum to more than π, flippable, and the flip keeps orientation.
+  bool delaunay_flippable(H h) const {
+    if (eflag(h) & (e_constrained | e_fixed)) return false;
+    const H oh = opposite(h, g_);
+    if (is_border(h) || is_border(oh)) return false;
+    const Eigen::Vector3d p0 = pt(target(h, g_)), p1 = pt(target(oh, g_));
+    const Eigen::Vector3d p2 = pt(target(next(h, g_), g_)), p3 = pt(target(next(oh, g_), g_));
+    // cot α + cot β < 0 ⇔ α + β > π (α at p2, β at p3).
+    auto cot = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+      const double s = a.cross(b).norm();
+      return s > 0 ? a.dot(b) / s : (a.dot(b) >= 0 ? 1e300 : -1e300);
+    };
+    const double c = cot(p0 - p2, p1 - p2) + cot(p0 - p3, p1 - p3);
+    if (!(c < -1e-12)) return false;
+    return flip_keeps_orientation(h) && genmesh::can_flip_edge(h, g_);
+  }
+
+  // -------------------------------------------------------------------------
+  // tangential_relaxation, projection
+  // -------------------------------------------------------------------------
+
+  std::size_t tangential_relaxation_and_project() {
+    const std::size_t n = tangential_relaxation();
+    project();
+    return n;
+  }
+
+  /// Returns the number of free vertices (moved at each step).
+  std::size_t tangential_relaxation() {
+    if (o_.smoothing == Smoothing::none || o_.smoothing_steps <= 0) return 0;
+    grow();
+    // The topology does not change while smoothing: read each free vertex's
+    // ring once (canonical order, compressed rows of vertex numbers), the
+    // positions into one array, and write the positions back at the end.
+    std::vector<V> free;
+    std::vector<std::uint32_t> free_id, offset{0}, ring;
+    const std::size_t vb = index_bound(vertex_index, g_);
+    std::vector<Eigen::Vector3d> pos(vb, Eigen::Vector3d::Zero());
+    for (auto v : vertices(g_)) {
+      pos[vid(v)] = pt(v);
+      if ((vflag_at(v) & (v_constrained | v_fixed)) || halfedge(v, g_) == null_h()) continue;
+      free.push_back(v);
+      free_id.push_back(vid(v));
+      for_each_in(v, [&](H x) { ring.push_back(vid(source(x, g_))); });
+      offset.push_back(static_cast<std::uint32_t>(ring.size()));
+    }
+    std::vector<Eigen::Vector3d> moved(free.size());
+    const double lambda = o_.smoothing_step_size;
+    const bool uniform = o_.smoothing == Smoothing::uniform;
+    const bool squared_areas = o_.smoothing == Smoothing::area_weighted;
+    for (int step = 0; step < o_.smoothing_steps; ++step) {
+      for (std::size_t i = 0; i < free.size(); ++i) {
+        const Eigen::Vector3d p = pos[free_id[i]];
+        Eigen::Vector3d normal = Eigen::Vector3d::Zero(), sum = Eigen::Vector3d::Zero();
+        double weight = 0;
+        const std::uint32_t b = offset[i], e = offset[i + 1], k = e - b;
+        for (std::uint32_t j = 0; j < k; ++j) {
+          // Inner vertex: ring[j] = a, the next one b; face (a, v, b).
+          const Eigen::Vector3d& a = pos[ring[b + j]];
+          const Eigen::Vector3d& c = pos[ring[b + (j + 1 == k ? 0 : j + 1)]];
+          const Eigen::Vector3d n = (c - p).cross(a - p);
+          normal += n;
+          if (uniform) {
+            sum += a;
+            weight += 1;
+          } else {
+            const double area = n.norm();
+            sum += area * (a + c + p);
+            weight += 3 * area;
+          }
+        }
+        Eigen::Vector3d u = weight > 0 ? Eigen::Vector3d(sum / weight - p) : Eigen::Vector3d::Zero();
+        if (squared_areas) {
+          // The point minimizing the sum of the squared areas of v's
+          // triangles (pmp-library's rule), if the system is well posed.
+          Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+          Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+          for (std::uint32_t j = 0; j < k; ++j) {
+            const Eigen::Vector3d& a = pos[ring[b + j]];
+            const Eigen::Vector3d d = pos[ring[b + (j + 1 == k ? 0 : j + 1)]] - a;
+            const double l2 = d.squaredNorm();
+            if (!(l2 > 0)) continue;
+            const Eigen::Matrix3d D = l2 * Eigen::Matrix3d::Identity() - d * d.transpose();
+            const double w = 1.0 / std::sqrt(l2);
+            A += w * D;
+            rhs += w * (D * a);
+          }
+          const double det = A.determinant(), scale = A.norm();
+          if (std::abs(det) > 1e-12 * scale * scale * scale) u = A.inverse() * rhs - p;
+        }
+        const double nn = normal.squaredNorm();
+        if (nn > 0) u -= normal * (u.dot(normal) / nn);
+        moved[i] = p + lambda * u;
+      }
+      for (std::size_t i = 0; i < free.size(); ++i)
+        if (moved[i].allFinite()) pos[free_id[i]] = moved[i];
+    }
+    for (std::size_t i = 0; i < free.size(); ++i) set_pt(free[i], pos[free_id[i]]);
+    return free.size();
+  }
+
+  /// Projects every vertex that may move onto the reference surface.
+  void project() {
+    if (!ref_) return;
+    grow();
+    for (auto v : vertices(g_)) {
+      if (vflag_at(v) & v_fixed) continue;
+      std::uint32_t& hint = hint_at(v);
+      set_pt(v, ref_->project(pt(v), hint));
+    }
+  }
+
+  void finish() {
+    std::size_t nv = 0, nf = 0;
+    for ([[maybe_unused]] auto v : vertices(g_)) ++nv;
+    for ([[maybe_unused]] auto f : faces(g_)) ++nf;
+    result_.vertices = nv;
+    result_.faces = nf;
+    result_.target_edge_length = L_;
+  }
+
+private:
+  // --- element access ------------------------------------------------------
+
+  static constexpr H null_h() { return boost::graph_traits<G>::null_halfedge(); }
+  static constexpr F null_f() { return boost::graph_traits<G>::null_face(); }
+  std::uint32_t vid(V v) const { return static_cast<std::uint32_t>(get(vi_, v)); }
+  std::uint32_t eid(H h) const { return static_cast<std::uint32_t>(get(ei_, edge(h, g_))); }
+  bool is_border(H h) const { return face(h, g_) == null_f(); }
+  Eigen::Vector3d pt(V v) const { return to_eigen(get(pm_, v)); }
+  void set_pt(V v, const Eigen::Vector3d& p) { put(pm_, v, from_eigen<point_t<G>>(p)); }
+  double len2(H h) const { return (pt(target(h, g_)) - pt(source(h, g_))).squaredNorm(); }
+
+  void grow() {
+    const std::size_t vb = index_bound(vertex_index, g_), eb = index_bound(edge_index, g_);
+    if (vflag_.size() < vb) vflag_.resize(vb, 0);
+    if (hint_.size() < vb) hint_.resize(vb, k_none);
+    if (!sizing_.empty() && sizing_.size() < vb) sizing_.resize(vb, L_);
+    if (eflag_.size() < eb) eflag_.resize(eb, 0);
+  }
+  std::uint8_t eflag(H h) const { return eflag_[eid(h)]; }
+  std::uint8_t vflag_at(V v) const { return vflag_[vid(v)]; }
+  std::uint32_t& hint_at(V v) {
+    if (vid(v) >= hint_.size()) grow();
+    return hint_[vid(v)];
+  }
+
+  /// Calls f(x) for every halfedge x into v, from halfedge(v): only for
+  /// what does not depend on the order (counts, flags, yes/no checks).
+  template <class Fn>
+  void for_each_in_any_order(V v, Fn&& f) const {
+    const H start = halfedge(v, g_);
+    if (start == null_h()) return;
+    H x = start;
+    do {
+      f(x);
+      x = opposite(next(x, g_), g_);
+    } while (x != start);
+  }
+
+  /// Calls f(x) for every halfedge x into v, from the canonical start: v's
+  /// border halfedge if it has one, else the one of its lowest-numbered edge.
+  template <class Fn>
+  void for_each_in(V v, Fn&& f) const {
+    const H start = halfedge(v, g_);
+    if (start == null_h()) return;
+    Ring ring;
+    std::size_t first = 0;
+    bool border = false;
+    std::uint32_t lowest = k_none;
+    H x = start;
+    do {
+      if (!border) {
+        if (is_border(x)) {
+          border = true;
+          first = ring.size();
+        } else if (const std::uint32_t i = eid(x); i < lowest) {
+          lowest = i;
+          first = ring.size();
+        }
+      }
+      ring.push_back(x);
+      x = opposite(next(x, g_), g_);
+    } while (x != start);
+    const std::size_t k = ring.size();
+    for (std::size_t i = 0; i < k; ++i) {
+      f(ring[(first + i) % k]);
+    }
+  }
+
+  // --- sizing ----------------------------------------------------------------
+
+  double size_at(V v) const { return sizing_.empty() ? L_ : sizing_[vid(v)]; }
+  double hi2(H h) const {
+    if (sizing_.empty()) return hi2_;
+    const double s = (4.0 / 3.0) * std::min(size_at(source(h, g_)), size_at(target(h, g_)));
+    return s * s;
+  }
+  double hi2(V a, V b) const {
+    if (sizing_.empty()) return hi2_;
+    const double s = (4.0 / 3.0) * std::min(size_at(a), size_at(b));
+    return s * s;
+  }
+  double lo2(H h) const {
+    if (sizing_.empty()) return lo2_;
+    const double s = (4.0 / 5.0) * std::min(size_at(source(h, g_)), size_at(target(h, g_)));
+    return s * s;
+  }
+  double min_length_bound() const { return o_.adaptive ? o_.adaptive->min_length : L_; }
+
+  // --- predicates --------------------------------------------------------------
+
+  bool splittable(H h) const {
+    const std::uint8_t f = eflag(h);
+    if (f & e_fixed) return false;
+    return !(f & e_constrained) || o_.constraints == Constraints::resample;
+  }
+
+  /// The largest cosine of triangle (a, b, c)'s angles (its smallest angle's).
+  static double max_cos(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+    auto cosine = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+      const double d = std::sqrt(u.squaredNorm() * v.squaredNorm());
+      return d > 0 ? u.dot(v) / d : 1.0;
+    };
+    return std::max({cosine(b - a, c - a), cosine(a - b, c - b), cosine(a - c, b - c)});
+  }
+
+  /// Whether flipping h keeps the two triangles oriented as before (no fold,
+  /// no degenerate triangle).
+  bool flip_keeps_orientation(H h) const {
+    const H oh = opposite(h, g_);
+    const Eigen::Vector3d p0 = pt(target(h, g_)), p1 = pt(target(oh, g_));
+    const Eigen::Vector3d p2 = pt(target(next(h, g_), g_)), p3 = pt(target(next(oh, g_), g_));
+    // Before: (p1, p0, p2) and (p0, p1, p3); after: (p0, p2, p3) and (p2, p1, p3).
+    const Eigen::Vector3d old_n = (p0 - p1).cross(p2 - p1) + (p1 - p0).cross(p3 - p0);
+    const Eigen::Vector3d n1 = (p2 - p0).cross(p3 - p0), n2 = (p1 - p2).cross(p3 - p2);
+    return n1.dot(n2) > 0 && n1.dot(old_n) > 0 && n2.dot(old_n) > 0;
+  }
+
+  /// Whether x may disappear into y along h (x → y).
+  bool removable(H h) const {
+    const V x = source(h, g_);
+    const std::uint8_t fx = vflag_at(x);
+    if (fx & v_fixed) return false;
+    if (!(fx & v_constrained)) return true;
+    // x lies on a constrained polyline: only along it, and the edges the
+    // collapse merges away must be free.
+    if (!(eflag(h) & e_constrained) || o_.constraints != Constraints::resample) return false;
+    const H oh = opposite(h, g_);
+    if (!is_border(h) && (eflag(prev(h, g_)) & e_constrained)) return false;  // x–t
+    if (!is_border(oh) && (eflag(next(oh, g_)) & e_constrained)) return false; // x–b
+    return true;
+  }
+
+  /// The geometric checks of collapsing x = source(h) into y = target(h):
+  /// no edge longer than 4/3 L appears, no triangle turns over.
+  bool collapse_geometry_ok(H h) const {
+    const V x = source(h, g_), y = target(h, g_);
+    const Eigen::Vector3d px = pt(x), py = pt(y);
+    bool ok = true;
+    for_each_in_any_order(x, [&](H in) {
+      if (!ok) return;
+      const V a = source(in, g_);
+      if (a == y) return;
+      const Eigen::Vector3d pa = pt(a);
+      if ((pa - py).squaredNorm() > hi2(a, y)) {
+        ok = false;
+        return;
+      }
+      if (is_border(in)) return;
+      const V b = target(next(in, g_), g_);
+      if (b == y) return;
+      // face(in) = (a, x, b) becomes (a, y, b).
+      const Eigen::Vector3d pb = pt(b);
+      const Eigen::Vector3d before = (px - pa).cross(pb - pa), after = (py - pa).cross(pb - pa);
+      if (!(before.dot(after) > 0)) ok = false;
+    });
+    return ok;
+  }
+
+  int valence(V v) const {
+    int n = 0;
+    const H start = halfedge(v, g_);
+    H x = start;
+    do {
+      ++n;
+      x = opposite(next(x, g_), g_);
+    } while (x != start);
+    return n;
+  }
+
+  /// Collapses the edge of h in the better allowed direction; returns the
+  /// surviving vertex. Bumps the stamps of the edges that change.
+  std::optional<V> try_collapse(H h, std::vector<std::uint32_t>& stamp) {
+    const H oh = opposite(h, g_);
+    bool ab = removable(h), ba = removable(oh); // ab: source(h) disappears
+    if (!ab && !ba) return std::nullopt;
+    // Both allowed: the lower-valence end disappears (pmp-library's rule).
+    H first = ab ? h : oh, second = ab && ba ? oh : null_h();
+    if (ab && ba && valence(source(oh, g_)) < valence(source(h, g_))) std::swap(first, second);
+    if (!genmesh::can_collapse_edge(edge(h, g_), std::as_const(g_))) return std::nullopt;
+    for (const H c : {first, second}) {
+      if (c == null_h() || !collapse_geometry_ok(c)) continue;
+      // collapse_edge removes x = source(c), c's edge, x–t on top and y–b at
+      // the bottom (x–b survives as y–b): y–b's flags move to x–b's index.
+      const H oc = opposite(c, g_);
+      const bool bottom = !is_border(oc);
+      const std::uint32_t kept = bottom ? eid(next(oc, g_)) : 0;
+      const std::uint8_t kept_flag = bottom ? eflag(prev(oc, g_)) : 0;
+      for_each_in_any_order(source(c, g_), [&](H in) { ++stamp[eid(in)]; });
+      for_each_in_any_order(target(c, g_), [&](H in) { ++stamp[eid(in)]; });
+      const auto q = genmesh::collapse_edge(edge(c, g_), g_);
+      if (!q) return std::nullopt;
+      if (bottom) eflag_[kept] = kept_flag;
+      return *q;
+    }
+    return std::nullopt;
+  }
+
+  // --- set-up --------------------------------------------------------------
+
+  void check_options() {
+    const std::string w = who_;
+    if (o_.target_edge_length) {
+      const double l = *o_.target_edge_length;
+      if (!(std::isfinite(l) && l > 0))
+        throw invalid_input(w + ": target_edge_length " + std::to_string(l) + " is not a positive finite length");
+    } else if (!(std::isfinite(o_.relative_edge_length) && o_.relative_edge_length > 0)) {
+      throw invalid_input(w + ": relative_edge_length " + std::to_string(o_.relative_edge_length) +
+                          " is not a positive finite factor");
+    }
+    if (o_.iterations < 0) throw invalid_input(w + ": iterations " + std::to_string(o_.iterations) + " < 0");
+    if (o_.smoothing_steps < 0)
+      throw invalid_input(w + ": smoothing_steps " + std::to_string(o_.smoothing_steps) + " < 0");
+    if (!(o_.smoothing_step_size > 0 && o_.smoothing_step_size <= 1))
+      throw invalid_input(w + ": smoothing_step_size " + std::to_string(o_.smoothing_step_size) +
+                          " is not in (0, 1]");
+    if (!std::isfinite(o_.feature_angle)) throw invalid_input(w + ": feature_angle is not finite");
+    if (o_.adaptive) {
+      const auto& a = *o_.adaptive;
+      if (!(std::isfinite(a.min_length) && a.min_length > 0 && std::isfinite(a.max_length) &&
+            a.max_length >= a.min_length && std::isfinite(a.approximation_error) && a.approximation_error > 0))
+        throw invalid_input(w + ": adaptive sizing needs 0 < min_length <= max_length and approximation_error > 0");
+    }
+  }
+
+  /// Triangulates or refuses polygons, before any other change.
+  void prepare_faces() {
+    bool polygons = false;
+    for (auto f : faces(g_)) {
+      const H h = halfedge(f, g_);
+      if (next(next(next(h, g_), g_), g_) == h) continue;
+      if (o_.polygons == Polygons::refuse)
+        throw invalid_input(std::string(who_) + ": face " + std::to_string(get(fi_, f)) +
+                            " is not a triangle (Polygons::refuse)");
+      polygons = true;
+    }
+    if (polygons && genmesh::triangulate_faces(g_) != 0)
+      throw invalid_input(std::string(who_) + ": a face could not be triangulated");
+  }
+
+  /// Refuses a vertex whose incoming halfedges do not form one fan, and an
+  /// edge with a hole on both sides.
+  void check_manifold() {
+    std::vector<std::uint32_t> count(index_bound(vertex_index, g_), 0);
+    for (auto h : halfedges(g_)) ++count[vid(target(h, g_))];
+    for (auto e : edges(g_)) {
+      const H h = halfedge(e, g_);
+      if (is_border(h) && is_border(opposite(h, g_)))
+        throw invalid_input(std::string(who_) + ": edge " + std::to_string(get(ei_, e)) +
+                            " has no face on either side");
+    }
+    for (auto v : vertices(g_)) {
+      const H start = halfedge(v, g_);
+      if (start == null_h()) continue;
+      std::uint32_t n = 0;
+      H x = start;
+      do {
+        ++n;
+        x = opposite(next(x, g_), g_);
+      } while (x != start && n <= count[vid(v)]);
+      if (n != count[vid(v)])
+        throw invalid_input(std::string(who_) + ": vertex " + std::to_string(vid(v)) +
+                            " is not manifold (its faces form more than one fan)");
+    }
+  }
+
+  void set_length() {
+    if (o_.target_edge_length) {
+      L_ = *o_.target_edge_length;
+    } else {
+      double sum = 0;
+      std::size_t n = 0;
+      for (auto e : edges(g_)) {
+        sum += std::sqrt(len2(halfedge(e, g_)));
+        ++n;
+      }
+      if (n == 0 || !(sum > 0))
+        throw invalid_input(std::string(who_) + ": the mesh has no edge of positive length to scale L by");
+      L_ = o_.relative_edge_length * (sum / static_cast<double>(n));
+      if (!(std::isfinite(L_) && L_ > 0))
+        throw invalid_input(std::string(who_) + ": the target edge length is not a positive finite length");
+    }
+    if (o_.adaptive) L_ = o_.adaptive->max_length;
+    hi2_ = (4.0 / 3.0 * L_) * (4.0 / 3.0 * L_);
+    lo2_ = (4.0 / 5.0 * L_) * (4.0 / 5.0 * L_);
+  }
+
+  void set_flags() {
+    vflag_.assign(index_bound(vertex_index, g_), 0);
+    eflag_.assign(index_bound(edge_index, g_), 0);
+    hint_.assign(vflag_.size(), k_none);
+    const bool patch = !o_.faces.empty();
+    auto in_patch = [&](F f) {
+      if (f == null_f()) return false;
+      const std::size_t i = get(fi_, f);
+      return !patch || (i < o_.faces.size() && o_.faces[i]);
+    };
+    const double cos_feature = std::cos(o_.feature_angle * std::numbers::pi / 180.0);
+    for (auto e : edges(g_)) {
+      const H h = halfedge(e, g_), oh = opposite(h, g_);
+      const std::size_t i = get(ei_, e);
+      std::uint8_t f = 0;
+      const bool in_h = in_patch(face(h, g_)), in_oh = in_patch(face(oh, g_));
+      if (!in_h && !in_oh) f = e_fixed;
+      else if (in_h != in_oh) // border of the mesh, or of the patch (then its outer face must not change)
+        f = face(h, g_) != null_f() && face(oh, g_) != null_f() ? e_constrained | e_fixed : e_constrained;
+      else if (i < o_.constrained_edges.size() && o_.constrained_edges[i]) f = e_constrained;
+      else if (o_.feature_angle > 0) {
+        const Eigen::Vector3d p0 = pt(target(h, g_)), p1 = pt(target(oh, g_));
+        const Eigen::Vector3d n1 = (p0 - p1).cross(pt(target(next(h, g_), g_)) - p1);
+        const Eigen::Vector3d n2 = (p1 - p0).cross(pt(target(next(oh, g_), g_)) - p0);
+        const double d = n1.norm() * n2.norm();
+        if (d > 0 && n1.dot(n2) < cos_feature * d) f = e_constrained;
+      }
+      eflag_[i] = f;
+    }
+    // Vertices: constrained edges counted; corners (not 0 or 2) fixed; a
+    // vertex touching a fixed edge (outside the patch) fixed.
+    for (auto v : vertices(g_)) {
+      int constrained = 0;
+      bool touches_fixed = false;
+      const H start = halfedge(v, g_);
+      if (start == null_h()) continue;
+      H x = start;
+      do {
+        const std::uint8_t f = eflag(x);
+        if (f & e_constrained) ++constrained;
+        if (f & e_fixed) touches_fixed = true;
+        x = opposite(next(x, g_), g_);
+      } while (x != start);
+      std::uint8_t& fv = vflag_[vid(v)];
+      if (constrained) fv |= v_constrained;
+      if (touches_fixed || (constrained != 0 && constrained != 2)) fv |= v_fixed;
+      if (constrained && o_.constraints == Constraints::protect) fv |= v_fixed;
+    }
+    // Protected constrained edges, and edges at fixed vertices whose faces
+    // are partly outside, stay as they are.
+    if (o_.constraints == Constraints::protect)
+      for (auto& f : eflag_)
+        if (f & e_constrained) f |= e_fixed;
+  }
+
+  G& g_;
+  const Remeshing_options& o_;
+  const char* who_;
+  vertex_point_map_t<G> pm_;
+  decltype(get(vertex_index, std::declval<const G&>())) vi_;
+  decltype(get(edge_index, std::declval<const G&>())) ei_;
+  decltype(get(face_index, std::declval<const G&>())) fi_;
+  double L_ = 0, hi2_ = 0, lo2_ = 0;
+  std::vector<std::uint8_t> vflag_, eflag_;
+  std::vector<std::uint32_t> hint_;
+  std::vector<double> sizing_;
+  std::unique_ptr<Reference_surface> ref_;
+  Remeshing_result result_;
+};
+
+} // namespace detail::remeshing
+
+} // namespace genmesh
