@@ -468,6 +468,8 @@ TEST(CliHostile, SignalsWhileWritingRemoveTheTemporary) {
     EXPECT_EQ(entries, 2u) << "signal " << sig << ": a temporary is left";
     EXPECT_EQ(read_file(out), "old output\n");
   }
+}
+
 // simplify: the target is met on every backend with the same result, the
 // JSON record says why it stopped, and bad targets are usage errors.
 TEST(Cli, SimplifyMeetsTheTargetOnEveryBackend) {
