@@ -7,10 +7,13 @@
 #include <genmesh/features.h>
 #include <genmesh/geometry.h>
 #include <genmesh/io.h>
+#include <genmesh/measures.h>
 #include <genmesh/soup_to_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/intersections.h>
 
@@ -502,6 +505,217 @@ TYPED_TEST(Spatial_index, EmptyAndNonFinite) {
   EXPECT_GT(t1.skipped_faces(), 0u);
   EXPECT_EQ(t1.size() + t1.skipped_faces(), nf);
   EXPECT_TRUE(std::isfinite(t1.closest_point(Vector3d(0, 0, 0)).squared_distance));
+}
+
+// ---------------------------------------------------------------------------
+// Measures: self-intersections, Hausdorff distance, quality
+// ---------------------------------------------------------------------------
+
+template <class G>
+class Measures : public ::testing::Test {};
+TYPED_TEST_SUITE(Measures, Backends);
+
+using Key_pair = std::pair<std::vector<std::size_t>, std::vector<std::size_t>>;
+
+template <class G, class Pairs>
+std::set<Key_pair> pair_keys(const G& g, const Pairs& pairs) {
+  std::set<Key_pair> out;
+  for (const auto& [f, h] : pairs) {
+    auto a = face_key(g, f), b = face_key(g, h);
+    if (b < a) std::swap(a, b);
+    out.emplace(a, b);
+  }
+  return out;
+}
+
+// elephant.off with vertex 0 pushed through the body (to the far side of
+// the bounding box centre): a real mesh made to self-intersect.
+Polygon_soup pierced(const std::string& name) {
+  Polygon_soup s = soup_of(name);
+  Eigen::AlignedBox3d box;
+  for (const auto& p : s.points) box.extend(p);
+  s.points[0] = box.center() + 0.8 * (box.center() - s.points[0]);
+  return s;
+}
+
+TYPED_TEST(Measures, SelfIntersectionsEqualCgal) {
+  std::vector<std::pair<std::string, Polygon_soup>> cases;
+  for (const char* n : {"elephant.off", "tetra_intersected_by_triangle.off", "fold.off", "degtri_sliding.off",
+                        "mannequin-devil.off", "blobby_3cc.off"})
+    cases.emplace_back(n, soup_of(n));
+  cases.emplace_back("pierced elephant", pierced("elephant.off"));
+  cases.emplace_back("pierced bunny", pierced("bunny00.off"));
+  std::size_t intersecting_cases = 0;
+  for (const auto& [name, soup] : cases) {
+    SCOPED_TRACE(name);
+    const auto g = mesh_of<TypeParam>(soup);
+    const auto sm = mesh_of<Surface_mesh>(soup);
+    std::vector<std::pair<Surface_mesh::Face_index, Surface_mesh::Face_index>> cgal;
+    PMP::self_intersections(sm, std::back_inserter(cgal));
+    const auto ours = genmesh::self_intersections(g);
+    EXPECT_EQ(pair_keys(g, ours), pair_keys(sm, cgal));
+    EXPECT_EQ(ours.size(), cgal.size());
+    EXPECT_EQ(genmesh::does_self_intersect(g), PMP::does_self_intersect(sm));
+    intersecting_cases += !ours.empty();
+    if (name.starts_with("pierced")) EXPECT_FALSE(ours.empty());
+    if (name == "elephant.off") EXPECT_TRUE(ours.empty());
+  }
+  EXPECT_GE(intersecting_cases, 3u);
+}
+
+//  Hand-made meshes (z = 0 unless said):
+//   a fold      2            a bent pair      2          a vertex-touching
+//              /|\           (shared edge 01,  |\         cone: faces around
+//   0 ───── 1 / 3 (3 on the  3 lifted: no)     0──1       one vertex only
+//   same side of 01, coplanar: yes)
+TYPED_TEST(Measures, HandMadeSelfIntersections) {
+  auto pairs_of = [](const Polygon_soup& s) {
+    const auto g = mesh_of<TypeParam>(s);
+    return pair_keys(g, genmesh::self_intersections(g));
+  };
+  Polygon_soup fold;
+  fold.add_point({0, 0, 0});
+  fold.add_point({2, 0, 0});
+  fold.add_point({1, 1, 0});
+  fold.add_point({1.2, 0.5, 0});
+  fold.add_face({0, 1, 2});
+  fold.add_face({1, 0, 3});  // folded back onto the first face
+  EXPECT_EQ(pairs_of(fold), (std::set<Key_pair>{{{0, 1, 2}, {0, 1, 3}}}));
+  Polygon_soup bent = fold;
+  bent.points[3] = Vector3d(1.2, 0.5, 0.3);
+  EXPECT_TRUE(pairs_of(bent).empty());
+  Polygon_soup open = fold;
+  open.points[3] = Vector3d(1, -1, 0);
+  EXPECT_TRUE(pairs_of(open).empty());
+  // A fan around vertex 0 (faces touch only at 0 and along their shared
+  // edges) and, apart from it, a triangle that pierces one fan face.
+  Polygon_soup fan;
+  fan.add_point({0, 0, 0});
+  for (int i = 0; i < 4; ++i) fan.add_point({std::cos(i * 1.5), std::sin(i * 1.5), 0.3});
+  for (int i = 0; i < 3; ++i) fan.add_face({0, i + 1, i + 2});
+  EXPECT_TRUE(pairs_of(fan).empty());
+  fan.add_point({0.4, 0.2, -1});
+  fan.add_point({0.4, 0.2, 1});
+  fan.add_point({0.5, 0.6, 0});
+  fan.add_face({5, 6, 7});
+  EXPECT_EQ(pairs_of(fan).size(), 1u);
+  // A degenerate face is reported with itself.
+  Polygon_soup deg;
+  deg.add_point({0, 0, 0});
+  deg.add_point({1, 0, 0});
+  deg.add_point({2, 0, 0});
+  deg.add_point({1, 1, 0});
+  deg.add_face({0, 1, 3});
+  deg.add_face({1, 2, 3});
+  deg.add_face({0, 3, 2});
+  const auto dp = pairs_of(deg);
+  EXPECT_EQ(dp.count({{0, 2, 3}, {0, 2, 3}}), 0u);
+  const auto dg = mesh_of<TypeParam>(deg);
+  const auto dpairs = genmesh::self_intersections(dg);
+  ASSERT_FALSE(dpairs.empty());
+}
+
+TYPED_TEST(Measures, BadInput) {
+  const TypeParam empty;
+  EXPECT_TRUE(genmesh::self_intersections(empty).empty());
+  EXPECT_FALSE(genmesh::does_self_intersect(empty));
+  const auto g = mesh_of<TypeParam>(soup_of("elephant.off"));
+  EXPECT_THROW(genmesh::hausdorff_distance(g, empty), genmesh::invalid_input);
+  EXPECT_THROW(genmesh::hausdorff_distance(empty, g), genmesh::invalid_input);
+  const auto q = genmesh::triangle_quality(empty);
+  EXPECT_EQ(q.faces, 0u);
+  EXPECT_TRUE(std::isnan(q.min_angle));
+
+  auto bad = mesh_of<TypeParam>(soup_of("elephant.off"));
+  put(get(genmesh::vertex_point, bad), *vertices(bad).begin(),
+      genmesh::from_eigen<genmesh::point_t<TypeParam>>(Vector3d(0, std::nan(""), 0)));
+  EXPECT_THROW(genmesh::self_intersections(bad), genmesh::invalid_input);
+  EXPECT_THROW(genmesh::hausdorff_distance(g, bad), genmesh::invalid_input);
+  EXPECT_THROW(genmesh::hausdorff_distance(bad, g), genmesh::invalid_input);
+  const auto quads = mesh_of<TypeParam>(soup_of("cube_quad.off"));
+  EXPECT_THROW(genmesh::self_intersections(quads), genmesh::invalid_input);
+}
+
+// Against CGAL's approximate_Hausdorff_distance with the same number of
+// face samples (both sample vertices, edges and faces; both under-estimate):
+// the perturbed elephant's distance is set by its moved vertices, which both
+// sample exactly. Tolerance: 2% (sampling differs on edges and faces).
+TYPED_TEST(Measures, HausdorffAgreesWithCgal) {
+  Polygon_soup moved = soup_of("elephant.off");
+  Eigen::AlignedBox3d box;
+  for (const auto& p : moved.points) box.extend(p);
+  const double diag = box.diagonal().norm();
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (auto& p : moved.points) p += 0.002 * diag * Vector3d(u(rng), u(rng), u(rng));
+  const auto a = mesh_of<TypeParam>(soup_of("elephant.off"));
+  const auto b = mesh_of<TypeParam>(moved);
+  const auto sa = mesh_of<Surface_mesh>(soup_of("elephant.off"));
+  const auto sb = mesh_of<Surface_mesh>(moved);
+  const std::size_t n = 200'000;
+  const auto ours = genmesh::hausdorff_distance(a, b, {.samples = n, .seed = 1});
+  const double cgal_ab = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(
+      sa, sb, CGAL::parameters::number_of_points_on_faces(n));
+  const double cgal_ba = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(
+      sb, sa, CGAL::parameters::number_of_points_on_faces(n));
+  EXPECT_NEAR(ours.a_to_b.max, cgal_ab, 0.02 * cgal_ab);
+  EXPECT_NEAR(ours.b_to_a.max, cgal_ba, 0.02 * cgal_ba);
+  EXPECT_LE(ours.rms, ours.hausdorff);
+  EXPECT_LE(ours.a_to_b.mean, ours.a_to_b.rms);
+  EXPECT_GE(ours.a_to_b.samples, n);
+  // Deterministic for a seed; the same on every backend.
+  const auto again = genmesh::hausdorff_distance(a, b, {.samples = n, .seed = 1});
+  EXPECT_EQ(again.hausdorff, ours.hausdorff);
+  EXPECT_EQ(again.rms, ours.rms);
+  const auto ra = mesh_of<genmesh_test::Halfedge_mesh>(soup_of("elephant.off"));
+  const auto rb = mesh_of<genmesh_test::Halfedge_mesh>(moved);
+  const auto ref = genmesh::hausdorff_distance(ra, rb, {.samples = n, .seed = 1});
+  EXPECT_EQ(ref.hausdorff, ours.hausdorff);
+  EXPECT_EQ(ref.rms, ours.rms);
+  // A surface against itself: zero.
+  EXPECT_EQ(genmesh::hausdorff_distance(a, a, {.samples = 10'000}).hausdorff, 0.0);
+}
+
+TYPED_TEST(Measures, QualityByHand) {
+  // A regular grid of right isosceles triangles: angles 45/45/90.
+  Polygon_soup grid;
+  const int n = 4;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) grid.add_point({double(i), double(j), 0});
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+      grid.add_face({a, b, c});
+      grid.add_face({a, c, d});
+    }
+  const auto g = mesh_of<TypeParam>(grid);
+  const auto q = genmesh::triangle_quality(g, {.target_edge_length = 1.0});
+  EXPECT_EQ(q.vertices, 25u);
+  EXPECT_EQ(q.faces, 32u);
+  EXPECT_EQ(q.edges, 56u);
+  EXPECT_EQ(q.border_edges, 16u);
+  EXPECT_NEAR(q.min_angle, 45, 1e-12);
+  EXPECT_NEAR(q.max_angle, 90, 1e-12);
+  EXPECT_NEAR(q.mean_angle, 60, 1e-12);
+  EXPECT_EQ(q.angles_below_30, 0.0);
+  EXPECT_NEAR(q.min_aspect_ratio, 1 / (2 * (std::sqrt(2.0) - 1)), 1e-12);  // R/(2r) of the right isosceles
+  EXPECT_EQ(q.interior_vertices, 9u);
+  EXPECT_EQ(q.border_vertices, 16u);
+  EXPECT_EQ(q.valence6_share, 1.0);  // the diagonals all run one way: interior valence 6
+  EXPECT_EQ(q.valence_histogram.at(6), 9u);
+  EXPECT_NEAR(q.edge_length_min, 1.0, 1e-15);
+  EXPECT_NEAR(q.edge_length_max, std::sqrt(2.0), 1e-15);
+  EXPECT_NEAR(q.relative_edge_length_mean, (40 + 16 * std::sqrt(2.0)) / 56, 1e-12);
+  // The equilateral triangle: aspect ratio 1, all angles 60.
+  Polygon_soup eq;
+  eq.add_point({0, 0, 0});
+  eq.add_point({1, 0, 0});
+  eq.add_point({0.5, std::sqrt(3.0) / 2, 0});
+  eq.add_face({0, 1, 2});
+  const auto e = genmesh::triangle_quality(mesh_of<TypeParam>(eq));
+  EXPECT_NEAR(e.min_aspect_ratio, 1.0, 1e-12);
+  EXPECT_NEAR(e.min_angle, 60, 1e-12);
+  EXPECT_EQ(e.border_valence4_share, 0.0);
 }
 
 } // namespace

@@ -10,6 +10,9 @@
 //                          [--policy quadric|probabilistic|length]
 //                          [--boundary preserve|lock|free] [--backend B] [--json]
 //   genmesh demo           [--json]                 every backend on built-in meshes
+//   genmesh measure A [B]  [--backend B] [--json] [--samples N]
+//                          quality and self-intersections of A (and B), with B
+//                          the two-way Hausdorff / RMS distance
 //   (--backend halfedge|surface-mesh|incidence; check --backend incidence also
 //   names the fins, misoriented edges and bow-ties of a non-manifold input)
 //
@@ -27,6 +30,7 @@
 #include <genmesh/io.h>
 #include <genmesh/local_operations.h>
 #include <genmesh/simplification.h>
+#include <genmesh/measures.h>
 #include <genmesh/soup_to_mesh.h>
 #include <genmesh/subdivision.h>
 #include <genmesh/validity.h>
@@ -49,6 +53,7 @@
 #include <span>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -100,6 +105,8 @@ const char* usage_text =
     "  subdivide IN OUT   subdivide IN, write OUT\n"
     "  simplify IN OUT    simplify IN by edge collapses, write OUT\n"
     "  demo               run genmesh on built-in meshes on every backend\n"
+    "  measure A [B]      quality and self-intersections of A; with B also the\n"
+    "                     two-way Hausdorff and RMS distance (relative to A's diagonal)\n"
     "options:\n"
     "  --backend halfedge|surface-mesh|incidence   mesh type to build (default halfedge)\n"
     "  --json             one-line machine-readable record\n"
@@ -115,6 +122,7 @@ const char* usage_text =
     "                     (a distance, relative to the bounding-box diagonal)\n"
     "  --policy P         simplify: quadric|probabilistic|length (default quadric)\n"
     "                     --boundary for simplify: preserve|lock|free (default preserve)\n"
+    "  --samples N        measure: face samples per direction (default max(10 x faces, 100000))\n"
     "formats: OFF, OBJ, PLY (ASCII, binary), STL (ASCII, binary)\n";
 
 struct Args {
@@ -135,6 +143,7 @@ struct Args {
   std::optional<double> ratio, error;
   std::string policy = "quadric";
   bool boundary_given = false;
+  std::size_t samples = 0;  // measure --samples
 };
 
 // "123", "64K", "1.5G" (powers of 1024) -> bytes; nullopt if malformed.
@@ -220,6 +229,19 @@ Args parse(int argc, char** argv) {
           throw usage_error("--levels takes a whole number from 0 to 12, got '" + bounded(v, 40) + "'");
         a.levels = levels;
       }
+    } else if (s == "--samples") {
+      if (i + 1 >= argc) throw usage_error(s + " needs a value");
+      const std::string v = argv[++i];
+      std::size_t used = 0;
+      unsigned long long n = 0;
+      try {
+        n = std::stoull(v, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != v.size() || v[0] == '-' || n == 0 || n > 1'000'000'000ULL)
+        throw usage_error("--samples takes a whole number from 1 to 1e9, got '" + v + "'");
+      a.samples = static_cast<std::size_t>(n);
     } else if (s.size() > 1 && s[0] == '-') {
       throw usage_error("unknown option '" + bounded(s, 40) + "'");
     } else {
@@ -228,6 +250,11 @@ Args parse(int argc, char** argv) {
   }
   const std::map<std::string, std::size_t> files_needed{
       {"info", 1}, {"check", 1}, {"convert", 2}, {"subdivide", 2}, {"simplify", 2}, {"demo", 0}};
+  if (a.command == "measure") {
+    if (a.files.size() != 1 && a.files.size() != 2)
+      throw usage_error("'measure' takes 1 or 2 file arguments, got " + std::to_string(a.files.size()));
+    return a;
+  }
   auto it = files_needed.find(a.command);
   if (it == files_needed.end()) throw usage_error("unknown command '" + bounded(a.command, 40) + "'");
   if (a.files.size() != it->second)
@@ -864,6 +891,141 @@ int cmd_demo(const Args& a) {
   return all_ok ? exit_ok : exit_invalid;
 }
 
+// genmesh measure A [B]: quality and self-intersections of A (and B); with B
+// the two-way Hausdorff and RMS distances. Exit 0 whatever the numbers say.
+std::string json_number(double x) {
+  if (!std::isfinite(x)) return "null";
+  std::ostringstream o;
+  o.precision(17);
+  o << x;
+  return o.str();
+}
+
+// Self-intersecting pairs of a mesh; a polygon mesh is measured on the fan
+// triangulation of its soup (built as a Halfedge_mesh).
+template <class Mesh>
+std::size_t count_self_intersections(const Mesh& mesh, const genmesh::Polygon_soup& soup) {
+  bool triangles = true;
+  for (const auto f : faces(mesh)) triangles = triangles && degree(f, mesh) == 3;
+  if (triangles) return genmesh::self_intersections(mesh).size();
+  genmesh::Polygon_soup fan;
+  fan.points = soup.points;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f)
+    for (auto i = soup.offsets[f] + 1; i + 1 < soup.offsets[f + 1]; ++i)
+      fan.add_face({soup.indices[soup.offsets[f]], soup.indices[i], soup.indices[i + 1]});
+  Halfedge_mesh t;
+  genmesh::build_mesh(fan, t);
+  return genmesh::self_intersections(t).size();
+}
+
+int cmd_measure(const Args& a) {
+  const bool progress = !a.json && isatty(STDERR_FILENO);
+  std::vector<genmesh::Polygon_soup> soups;
+  for (const auto& f : a.files) soups.push_back(genmesh::read_soup(f));
+  return with_backend(a.backend, [&](auto& first) {
+    using Mesh = std::remove_reference_t<decltype(first)>;
+    std::vector<Mesh> meshes(soups.size());
+    for (std::size_t i = 0; i < soups.size(); ++i) {
+      try {
+        genmesh::build_mesh(soups[i], meshes[i]);
+      } catch (const genmesh::invalid_input& e) {
+        throw genmesh::io_error(a.files[i], e.what());
+      }
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const Mesh& ma = meshes[0];
+    const double diag = genmesh::diagonal(ma);
+    std::vector<genmesh::Triangle_quality> quality;
+    std::vector<std::size_t> pairs;
+    for (std::size_t i = 0; i < meshes.size(); ++i) {
+      if (progress) std::fprintf(stderr, "\rmeasure: quality and self-intersections of %s", a.files[i].c_str());
+      quality.push_back(genmesh::triangle_quality(meshes[i]));
+      pairs.push_back(count_self_intersections(meshes[i], soups[i]));
+    }
+    if (progress) std::fprintf(stderr, "\n");
+    std::optional<genmesh::Hausdorff_result> h;
+    if (meshes.size() == 2) {
+      genmesh::Hausdorff_options o{.samples = a.samples};
+      if (progress)
+        o.progress = [](std::size_t done, std::size_t all) {
+          std::fprintf(stderr, "\rmeasure: Hausdorff distance, %zu / %zu samples", done, all);
+        };
+      h = genmesh::hausdorff_distance(meshes[0], meshes[1], o);
+      if (progress) std::fprintf(stderr, "\n");
+    }
+    const double seconds = seconds_since(t0);
+    auto rel = [&](double x) { return diag > 0 ? x / diag : std::nan(""); };
+    const auto& q = quality[0];
+    if (a.json) {
+      std::cout << "{\"command\":\"measure\",\"file\":\"" << json_escape(a.files[0]) << "\"";
+      if (h) std::cout << ",\"file_b\":\"" << json_escape(a.files[1]) << "\"";
+      std::cout << ",\"backend\":\"" << a.backend << "\",\"vertices\":" << q.vertices
+                << ",\"edges\":" << q.edges << ",\"faces\":" << q.faces
+                << ",\"diagonal\":" << json_number(diag) << ",\"min_angle\":" << json_number(q.min_angle)
+                << ",\"max_angle\":" << json_number(q.max_angle) << ",\"mean_angle\":" << json_number(q.mean_angle)
+                << ",\"angles_below_30\":" << json_number(q.angles_below_30)
+                << ",\"max_aspect_ratio\":" << json_number(q.max_aspect_ratio)
+                << ",\"mean_aspect_ratio\":" << json_number(q.mean_aspect_ratio)
+                << ",\"valence6_share\":" << json_number(q.valence6_share)
+                << ",\"border_valence4_share\":" << json_number(q.border_valence4_share)
+                << ",\"edge_length_mean\":" << json_number(q.edge_length_mean)
+                << ",\"edge_length_deviation\":" << json_number(q.edge_length_deviation)
+                << ",\"degenerate_faces\":" << q.degenerate_faces
+                << ",\"self_intersecting_pairs\":" << pairs[0];
+      if (h) {
+        const auto& qb = quality[1];
+        std::cout << ",\"vertices_b\":" << qb.vertices << ",\"faces_b\":" << qb.faces
+                  << ",\"min_angle_b\":" << json_number(qb.min_angle)
+                  << ",\"angles_below_30_b\":" << json_number(qb.angles_below_30)
+                  << ",\"valence6_share_b\":" << json_number(qb.valence6_share)
+                  << ",\"self_intersecting_pairs_b\":" << pairs[1]
+                  << ",\"hausdorff\":" << json_number(rel(h->hausdorff))
+                  << ",\"hausdorff_absolute\":" << json_number(h->hausdorff)
+                  << ",\"hausdorff_a_to_b\":" << json_number(rel(h->a_to_b.max))
+                  << ",\"hausdorff_b_to_a\":" << json_number(rel(h->b_to_a.max))
+                  << ",\"rms\":" << json_number(rel(h->rms)) << ",\"rms_absolute\":" << json_number(h->rms)
+                  << ",\"mean_distance\":" << json_number(rel(h->mean))
+                  << ",\"samples\":" << h->a_to_b.samples + h->b_to_a.samples;
+      }
+      std::cout << ",\"seconds\":" << seconds << "}\n";
+      return exit_ok;
+    }
+    auto row = [](const std::string& k, const std::string& v) {
+      std::cout << "  " << k << std::string(k.size() < 28 ? 28 - k.size() : 1, ' ') << v << "\n";
+    };
+    auto num = [](double x) {
+      std::ostringstream o;
+      o.precision(6);
+      o << x;
+      return o.str();
+    };
+    for (std::size_t i = 0; i < meshes.size(); ++i) {
+      const auto& qi = quality[i];
+      std::cout << a.files[i] << " (" << a.backend << ")\n";
+      row("vertices / edges / faces", std::to_string(qi.vertices) + " / " + std::to_string(qi.edges) + " / " +
+                                          std::to_string(qi.faces));
+      row("angles min / mean / max", num(qi.min_angle) + " / " + num(qi.mean_angle) + " / " + num(qi.max_angle) + " deg");
+      row("angles below 30 deg", num(100 * qi.angles_below_30) + " %");
+      row("aspect ratio mean / max", num(qi.mean_aspect_ratio) + " / " + num(qi.max_aspect_ratio));
+      row("interior valence 6", num(100 * qi.valence6_share) + " %");
+      row("border valence 4", qi.border_vertices ? num(100 * qi.border_valence4_share) + " %" : "n/a (closed)");
+      row("edge length mean (dev)", num(qi.edge_length_mean) + " (" + num(qi.edge_length_deviation) + ")");
+      row("degenerate faces", std::to_string(qi.degenerate_faces));
+      row("self-intersecting pairs", std::to_string(pairs[i]));
+    }
+    if (h) {
+      std::cout << "distance (relative to the diagonal of " << a.files[0] << ", " << num(diag) << ")\n";
+      row("Hausdorff", num(rel(h->hausdorff)) + "  (" + num(h->hausdorff) + ")");
+      row("  A -> B / B -> A", num(rel(h->a_to_b.max)) + " / " + num(rel(h->b_to_a.max)));
+      row("RMS", num(rel(h->rms)) + "  (" + num(h->rms) + ")");
+      row("mean", num(rel(h->mean)) + "  (" + num(h->mean) + ")");
+      row("samples", std::to_string(h->a_to_b.samples + h->b_to_a.samples));
+    }
+    row("seconds", num(seconds));
+    return exit_ok;
+  });
+}
+
 } // namespace
 
 // SIGINT, SIGTERM, SIGHUP: remove the output's temporary (an existing output
@@ -900,6 +1062,7 @@ int main(int argc, char** argv) {
     if (a.command == "convert") return cmd_convert(a);
     if (a.command == "subdivide") return cmd_subdivide(a);
     if (a.command == "simplify") return cmd_simplify(a);
+    if (a.command == "measure") return cmd_measure(a);
     return cmd_info_or_check(a);
   } catch (const usage_error& e) {
     std::cerr << "genmesh: " << bounded(e.what()) << "\n" << usage_text;

@@ -11,14 +11,14 @@
 
 #include <Eigen/Core>
 
-#include <boost/container/small_vector.hpp>
-
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace genmesh::detail::pred {
 
-using Expansion = boost::container::small_vector<double, 32>;
+// Only nearly degenerate input reaches the expansions: plain vectors will do.
+using Expansion = std::vector<double>;
 
 inline void two_sum(double a, double b, double& x, double& y) {
   x = a + b;
