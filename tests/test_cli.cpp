@@ -470,6 +470,40 @@ TEST(CliHostile, SignalsWhileWritingRemoveTheTemporary) {
   }
 }
 
+// measure: the counts and quality of one mesh, and with a second mesh the
+// two-way distance: a mesh against a moved copy of itself is measured apart,
+// against itself at zero up to rounding; a missing file is a usage error.
+TEST(Cli, MeasureReportsQualityAndDistance) {
+  const std::string in = real_mesh("elephant.off");
+  Cli_run one = genmesh("measure " + in + " --json");
+  ASSERT_EQ(one.exit_code, 0) << one.out << one.err;
+  EXPECT_EQ(json_int(one.out, "faces"), 5558);
+  EXPECT_EQ(json_int(one.out, "self_intersecting_pairs"), 0);
+  for (const char* key : {"\"min_angle\":", "\"angles_below_30\":", "\"valence6_share\":"})
+    EXPECT_NE(one.out.find(key), std::string::npos) << key << " in " << one.out;
+  EXPECT_EQ(one.out.find("\"hausdorff\""), std::string::npos) << "no B, no distance";
+
+  Cli_run self = genmesh("measure " + in + " " + in + " --json --samples 2000");
+  ASSERT_EQ(self.exit_code, 0) << self.out << self.err;
+  const auto at = self.out.find("\"hausdorff\":");
+  ASSERT_NE(at, std::string::npos) << self.out;
+  EXPECT_LE(std::stod(self.out.substr(at + 12)), 1e-12);
+
+  // The elephant scaled by 1.01 about the origin: a positive distance.
+  genmesh::Polygon_soup soup = genmesh::read_soup(in);
+  for (auto& p : soup.points) p *= 1.01;
+  const std::string moved = tmp_path("elephant_scaled.off");
+  genmesh::write_soup(moved, soup);
+  Cli_run apart = genmesh("measure " + in + " " + moved + " --json --samples 2000");
+  ASSERT_EQ(apart.exit_code, 0) << apart.out << apart.err;
+  const auto at2 = apart.out.find("\"hausdorff\":");
+  ASSERT_NE(at2, std::string::npos) << apart.out;
+  EXPECT_GT(std::stod(apart.out.substr(at2 + 12)), 1e-4);
+
+  EXPECT_EQ(genmesh("measure").exit_code, 2);
+  EXPECT_NE(genmesh("measure " + tmp_path("missing.off")).exit_code, 0);
+}
+
 // simplify: the target is met on every backend with the same result, the
 // JSON record says why it stopped, and bad targets are usage errors.
 TEST(Cli, SimplifyMeetsTheTargetOnEveryBackend) {

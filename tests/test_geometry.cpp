@@ -672,8 +672,9 @@ TYPED_TEST(Measures, HausdorffAgreesWithCgal) {
   const auto ref = genmesh::hausdorff_distance(ra, rb, {.samples = n, .seed = 1});
   EXPECT_EQ(ref.hausdorff, ours.hausdorff);
   EXPECT_EQ(ref.rms, ours.rms);
-  // A surface against itself: zero.
-  EXPECT_EQ(genmesh::hausdorff_distance(a, a, {.samples = 10'000}).hausdorff, 0.0);
+  // A surface against itself: zero up to the rounding of a sample's
+  // barycentric point (measured 1e-16 on elephant).
+  EXPECT_LE(genmesh::hausdorff_distance(a, a, {.samples = 10'000}).hausdorff, 1e-12 * genmesh::diagonal(a));
 }
 
 TYPED_TEST(Measures, QualityByHand) {
