@@ -27,6 +27,7 @@
 #include <type_traits>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -429,6 +430,26 @@ struct Pending_temporaries {
 inline Pending_temporaries pending_temporaries;
 static_assert(std::atomic<int>::is_always_lock_free);
 
+/// SIGINT, SIGTERM and SIGHUP held back in this thread for the scope's
+/// lifetime (delivered when it ends).
+class Terminating_signals_blocked {
+public:
+  Terminating_signals_blocked() {
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    sigaddset(&set, SIGHUP);
+    ::pthread_sigmask(SIG_BLOCK, &set, &old_);
+  }
+  ~Terminating_signals_blocked() { ::pthread_sigmask(SIG_SETMASK, &old_, nullptr); }
+  Terminating_signals_blocked(const Terminating_signals_blocked&) = delete;
+  Terminating_signals_blocked& operator=(const Terminating_signals_blocked&) = delete;
+
+private:
+  sigset_t old_;
+};
+
 /// Writes to a temporary file beside the target and renames it over the
 /// target on commit(); if commit() is never reached (an exception), the
 /// temporary is removed and the target is left as it was. A program that
@@ -469,6 +490,9 @@ public:
         throw io_error(name_, "cannot write: the existing file has " + std::to_string(st.st_nlink) +
                                   " hard links, which replacing it would split; remove it first or write elsewhere");
     }
+    // The terminating signals wait while the temporary is created and
+    // registered: a signal between the two would leave it behind.
+    const Terminating_signals_blocked blocked;
     std::random_device rd;
     for (int attempt = 0; attempt < 16 && !fp_; ++attempt) {
       // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
