@@ -145,6 +145,30 @@ inline Polygon_soup read_soup(const std::filesystem::path& path, const Read_opti
                  std::nullopt, 0);
 }
 
+namespace detail::io {
+
+/// write_soup() and write_mesh(): `source` is a Soup_source or a
+/// detail::Soup_view, streamed to a temporary renamed over `path` at the end.
+template <class Source>
+void write_source(const std::filesystem::path& path, const Source& source, const Write_options& options) {
+  File_format format = options.format;
+  if (format == File_format::automatic) format = format_from_extension(path);
+  if (format == File_format::automatic)
+    throw io_error(path.string(), "unknown format: the extension " + quote(path.extension().string()) +
+                                      " is not .off, .obj, .ply or .stl");
+  Atomic_file out(path);
+  switch (format) {
+    case File_format::off: write_off(out, source, options.precision); break;
+    case File_format::obj: write_obj(out, source, options.precision); break;
+    case File_format::ply: write_ply(out, source, options.binary, options.precision); break;
+    case File_format::stl: write_stl(out, source, options.binary, options.precision); break;
+    case File_format::automatic: break;
+  }
+  out.commit();
+}
+
+} // namespace detail::io
+
 /// Writes a polygon soup as OFF, OBJ, PLY (ascii or binary little endian) or
 /// STL (ASCII or binary; polygons triangulated as fans). The format comes from
 /// options.format, else from the extension. Throws io_error if the format is
@@ -153,21 +177,7 @@ inline Polygon_soup read_soup(const std::filesystem::path& path, const Read_opti
 /// a non-finite point); the target is then untouched.
 inline void write_soup(const std::filesystem::path& path, const Polygon_soup& soup,
                        const Write_options& options = {}) {
-  namespace d = detail::io;
-  File_format format = options.format;
-  if (format == File_format::automatic) format = d::format_from_extension(path);
-  if (format == File_format::automatic)
-    throw io_error(path.string(), "unknown format: the extension " + d::quote(path.extension().string()) +
-                                      " is not .off, .obj, .ply or .stl");
-  d::Atomic_file out(path);
-  switch (format) {
-    case File_format::off: d::write_off(out, soup, options.precision); break;
-    case File_format::obj: d::write_obj(out, soup, options.precision); break;
-    case File_format::ply: d::write_ply(out, soup, options.binary, options.precision); break;
-    case File_format::stl: d::write_stl(out, soup, options.binary, options.precision); break;
-    case File_format::automatic: break;
-  }
-  out.commit();
+  detail::io::write_source(path, detail::io::Soup_source(soup), options);
 }
 
 /// Removes the temporary files of the writes in progress (see write_soup()):
@@ -195,11 +205,12 @@ void read_mesh(const std::filesystem::path& path, G& g, const Read_options& opti
   }
 }
 
-/// Writes the mesh g: to_soup(g) (vertices and faces in iteration order),
-/// then write_soup().
+/// Writes the mesh g as write_soup(path, to_soup(g), options) would, byte
+/// for byte, but streamed from g: no copy of the mesh is made (the writer
+/// holds one integer per vertex, numbering the vertices).
 template <FaceListGraph G>
 void write_mesh(const std::filesystem::path& path, const G& g, const Write_options& options = {}) {
-  write_soup(path, to_soup(g), options);
+  detail::io::write_source(path, detail::Soup_view<G>(g), options);
 }
 
 } // namespace genmesh

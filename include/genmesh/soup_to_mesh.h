@@ -42,6 +42,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -274,6 +275,104 @@ Build_report build_mesh(const Polygon_soup& soup, G& g, const Build_options& opt
   return report;
 }
 
+namespace detail {
+
+template <class G>
+std::size_t face_count(const G& g) {
+  return static_cast<std::size_t>(num_faces(g));
+}
+
+/// g read as a soup without copying it: vertices numbered 0..n-1 in
+/// iteration order, faces in iteration order, each face's corners rotated to
+/// start at its lowest number. What to_soup() and the mesh writers
+/// (write_mesh() in <genmesh/io.h>) share; it holds only the numbering (one
+/// integer per vertex index), g must outlive it and stay unchanged.
+template <class G>
+  requires FaceListGraph<G> && VertexListGraph<G> && HasVertexPoints<G>
+class Soup_view {
+  using V = vertex_descriptor_t<G>;
+  using H = halfedge_descriptor_t<G>;
+
+ public:
+  using Index = Polygon_soup::Index;
+
+  explicit Soup_view(const G& g)
+      : g_(g), points_(get(vertex_point, const_cast<G&>(g))),   // HasVertexPoints promises get() on a non-const graph only; the map is only read
+        num_faces_(face_count(g)) {
+    if constexpr (HasIndexMap<G, vertex_index_t>) number_.assign(index_bound(vertex_index, g), k_null);
+    for (V v : vertices(g)) {
+      const auto n = static_cast<std::uint32_t>(num_points_++);
+      if constexpr (HasIndexMap<G, vertex_index_t>) number_[vindex(v)] = n;
+      else numbers_.emplace(v, n);
+    }
+  }
+
+  std::size_t num_points() const noexcept { return num_points_; }
+  std::size_t num_faces() const noexcept { return num_faces_; }
+
+  /// f(number, point) for every vertex, in number order.
+  template <class F>
+  void for_each_point(F&& f) const {
+    std::size_t n = 0;
+    for (V v : vertices(g_)) f(n++, to_eigen(get(points_, v)));
+  }
+
+  /// f(number, corners, corner points) for every face, in iteration order;
+  /// corner points is empty unless WithPoints. Throws genmesh::invalid_input
+  /// when a face cycle does not close (a corrupt mesh).
+  template <bool WithPoints = false, class F>
+  void for_each_face(F&& f) const {
+    const std::size_t max_len = static_cast<std::size_t>(num_halfedges(g_));
+    std::vector<Index> c;
+    std::vector<Eigen::Vector3d> p;
+    std::size_t fnum = 0;
+    for (auto fd : faces(g_)) {
+      c.clear();
+      p.clear();
+      const H h0 = halfedge(fd, g_);
+      H h = h0;
+      do {
+        const V t = target(h, g_);
+        const std::uint32_t v = number(t);
+        if (v == k_null || c.size() > max_len)
+          throw invalid_input("to_soup: the cycle of face " + std::to_string(fnum) + " is corrupt");
+        c.push_back(v);
+        if constexpr (WithPoints) p.push_back(to_eigen(get(points_, t)));
+        h = next(h, g_);
+      } while (h != h0);
+      const auto first = std::min_element(c.begin(), c.end()) - c.begin();
+      std::rotate(c.begin(), c.begin() + first, c.end());
+      if constexpr (WithPoints) std::rotate(p.begin(), p.begin() + first, p.end());
+      f(fnum, std::span<const Index>(c), std::span<const Eigen::Vector3d>(p));
+      ++fnum;
+    }
+  }
+
+ private:
+  std::size_t vindex(V v) const {
+    if constexpr (HasIndexMap<G, vertex_index_t>) return static_cast<std::size_t>(get(get(vertex_index, g_), v));
+    else return 0;
+  }
+  std::uint32_t number(V v) const {
+    if constexpr (HasIndexMap<G, vertex_index_t>) {
+      const std::size_t i = vindex(v);
+      return i < number_.size() ? number_[i] : k_null;
+    } else {
+      const auto it = numbers_.find(v);
+      return it == numbers_.end() ? k_null : it->second;
+    }
+  }
+
+  const G& g_;
+  decltype(get(vertex_point, std::declval<G&>())) points_;
+  std::size_t num_points_ = 0;
+  std::size_t num_faces_ = 0;
+  std::vector<std::uint32_t> number_;           // by vertex index (graphs with an index map)
+  std::unordered_map<V, std::uint32_t> numbers_; // otherwise
+};
+
+} // namespace detail
+
 /// The soup of g: vertices in vertex iteration order (isolated ones
 /// included), faces in face iteration order, each face rotated to start at
 /// its lowest-numbered vertex. Throws genmesh::invalid_input when a face cycle
@@ -281,61 +380,13 @@ Build_report build_mesh(const Polygon_soup& soup, G& g, const Build_options& opt
 template <class G>
   requires FaceListGraph<G> && VertexListGraph<G> && HasVertexPoints<G>
 Polygon_soup to_soup(const G& g) {
-  using V = vertex_descriptor_t<G>;
-  using H = halfedge_descriptor_t<G>;
+  const detail::Soup_view<G> view(g);
   Polygon_soup s;
-  s.points.reserve(static_cast<std::size_t>(num_vertices(g)));
-  // HasVertexPoints promises get() on a non-const graph only; the map is only read.
-  auto points = get(vertex_point, const_cast<G&>(g));
-  std::vector<std::uint32_t> number;
-  std::unordered_map<V, std::uint32_t> numbers;
-  std::size_t bound = 0;
-  if constexpr (HasIndexMap<G, vertex_index_t>) {
-    bound = index_bound(vertex_index, g);
-    number.assign(bound, detail::k_null);
-  }
-  const auto index_map = [&] {
-    if constexpr (HasIndexMap<G, vertex_index_t>) return get(vertex_index, g);
-    else return 0;
-  }();
-  auto vindex = [&](V v) -> std::size_t {
-    if constexpr (HasIndexMap<G, vertex_index_t>) return static_cast<std::size_t>(get(index_map, v));
-    else return 0;
-  };
-  for (V v : vertices(g)) {
-    auto n = static_cast<std::uint32_t>(s.points.size());
-    if constexpr (HasIndexMap<G, vertex_index_t>) number[vindex(v)] = n;
-    else numbers.emplace(v, n);
-    s.points.push_back(to_eigen(get(points, v)));
-  }
-  auto num = [&](V v) -> std::uint32_t {
-    if constexpr (HasIndexMap<G, vertex_index_t>) {
-      std::size_t i = vindex(v);
-      return i < bound ? number[i] : detail::k_null;
-    } else {
-      auto it = numbers.find(v);
-      return it == numbers.end() ? detail::k_null : it->second;
-    }
-  };
-  const std::size_t max_len = static_cast<std::size_t>(num_halfedges(g));
-  std::vector<Polygon_soup::Index> c;
-  std::size_t fnum = 0;
-  s.indices.reserve(3 * static_cast<std::size_t>(num_faces(g)));
-  s.offsets.reserve(static_cast<std::size_t>(num_faces(g)) + 1);
-  for (auto f : faces(g)) {
-    c.clear();
-    H h0 = halfedge(f, g), h = h0;
-    do {
-      std::uint32_t v = num(target(h, g));
-      if (v == detail::k_null || c.size() > max_len)
-        throw invalid_input("to_soup: the cycle of face " + std::to_string(fnum) + " is corrupt");
-      c.push_back(v);
-      h = next(h, g);
-    } while (h != h0);
-    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
-    s.add_face(c);
-    ++fnum;
-  }
+  s.points.reserve(view.num_points());
+  view.for_each_point([&](std::size_t, const Eigen::Vector3d& p) { s.points.push_back(p); });
+  s.indices.reserve(3 * view.num_faces());
+  s.offsets.reserve(view.num_faces() + 1);
+  view.for_each_face([&](std::size_t, std::span<const Polygon_soup::Index> c, auto) { s.add_face(c); });
   return s;
 }
 

@@ -21,6 +21,8 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <span>
+#include <vector>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -589,19 +591,50 @@ void append_int(std::string& out, I v) {
 
 /// Throws io_error for what a writer cannot write: an index out of range,
 /// a face with fewer than 3 corners, a non-finite point.
-inline void check_face_for_write(const Polygon_soup& soup, std::size_t f, const std::string& file) {
-  const auto c = soup.face(f);
+/// A Polygon_soup read the way the writers read a mesh (detail::Soup_view in
+/// <genmesh/soup_to_mesh.h>): counts, points in order, faces in order with
+/// their corner points on request. The writers take either.
+class Soup_source {
+ public:
+  using Index = Polygon_soup::Index;
+  explicit Soup_source(const Polygon_soup& s) noexcept : s_(s) {}
+  std::size_t num_points() const noexcept { return s_.num_points(); }
+  std::size_t num_faces() const noexcept { return s_.num_faces(); }
+  template <class F>
+  void for_each_point(F&& f) const {
+    for (std::size_t v = 0; v < s_.num_points(); ++v) f(v, s_.points[v]);
+  }
+  /// With points, the corners must be in range (check_face_for_write()
+  /// first: a corner out of range gives no point, and an empty span).
+  template <bool WithPoints = false, class F>
+  void for_each_face(F&& f) const {
+    std::vector<Eigen::Vector3d> p;
+    for (std::size_t i = 0; i < s_.num_faces(); ++i) {
+      const auto c = s_.face(i);
+      p.clear();
+      if constexpr (WithPoints)
+        if (std::all_of(c.begin(), c.end(), [&](Index k) { return k < s_.num_points(); }))
+          for (Index k : c) p.push_back(s_.points[k]);
+      f(i, c, std::span<const Eigen::Vector3d>(p));
+    }
+  }
+
+ private:
+  const Polygon_soup& s_;
+};
+
+inline void check_face_for_write(std::span<const Polygon_soup::Index> c, std::size_t f, std::size_t num_points,
+                                 const std::string& file) {
   if (c.size() < 3)
     throw io_error(file, "cannot write: face " + std::to_string(f) + " has " +
                              std::to_string(c.size()) + " corners (at least 3 needed)");
   for (auto i : c)
-    if (i >= soup.num_points())
+    if (i >= num_points)
       throw io_error(file, "cannot write: face " + std::to_string(f) + " has index " +
                                std::to_string(i) + " out of range (" +
-                               std::to_string(soup.num_points()) + " points)");
+                               std::to_string(num_points) + " points)");
 }
-inline void check_point_for_write(const Polygon_soup& soup, std::size_t v, const std::string& file) {
-  const auto& p = soup.points[v];
+inline void check_point_for_write(const Eigen::Vector3d& p, std::size_t v, const std::string& file) {
   if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
     throw io_error(file, "cannot write: point " + std::to_string(v) + " has a non-finite coordinate");
 }

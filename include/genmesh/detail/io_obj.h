@@ -98,26 +98,27 @@ inline Polygon_soup read_obj(const File_content& file) {
   return soup;
 }
 
-inline void write_obj(Atomic_file& out, const Polygon_soup& soup, int precision) {
+/// Writes `soup` (Soup_source or detail::Soup_view) as OBJ.
+template <class Source>
+void write_obj(Atomic_file& out, const Source& soup, int precision) {
   std::string& b = out.buffer;
   b += "# written by genmesh\n";
-  for (std::size_t v = 0; v < soup.num_points(); ++v) {
-    check_point_for_write(soup, v, out.name());
-    const auto& p = soup.points[v];
+  soup.for_each_point([&](std::size_t v, const Eigen::Vector3d& p) {
+    check_point_for_write(p, v, out.name());
     b += "v ";
     append_point(b, p, precision);
     out.flush_if_large();
-  }
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    check_face_for_write(soup, f, out.name());
+  });
+  soup.for_each_face([&](std::size_t f, std::span<const Polygon_soup::Index> c, auto) {
+    check_face_for_write(c, f, soup.num_points(), out.name());
     b += 'f';
-    for (auto i : soup.face(f)) {
+    for (auto i : c) {
       b += ' ';
       append_int(b, std::uint64_t{i} + 1);
     }
     b += '\n';
     out.flush_if_large();
-  }
+  });
 }
 
 } // namespace genmesh::detail::io

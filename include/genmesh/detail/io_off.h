@@ -92,22 +92,22 @@ inline Polygon_soup read_off(const File_content& file) {
   return soup;
 }
 
-inline void write_off(Atomic_file& out, const Polygon_soup& soup, int precision) {
+/// Writes `soup` (Soup_source or detail::Soup_view) as OFF.
+template <class Source>
+void write_off(Atomic_file& out, const Source& soup, int precision) {
   std::string& b = out.buffer;
   b += "OFF\n";
   append_int(b, soup.num_points());
   b += ' ';
   append_int(b, soup.num_faces());
   b += " 0\n";
-  for (std::size_t v = 0; v < soup.num_points(); ++v) {
-    check_point_for_write(soup, v, out.name());
-    const auto& p = soup.points[v];
+  soup.for_each_point([&](std::size_t v, const Eigen::Vector3d& p) {
+    check_point_for_write(p, v, out.name());
     append_point(b, p, precision);
     out.flush_if_large();
-  }
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    check_face_for_write(soup, f, out.name());
-    const auto c = soup.face(f);
+  });
+  soup.for_each_face([&](std::size_t f, std::span<const Polygon_soup::Index> c, auto) {
+    check_face_for_write(c, f, soup.num_points(), out.name());
     append_int(b, c.size());
     for (auto i : c) {
       b += ' ';
@@ -115,7 +115,7 @@ inline void write_off(Atomic_file& out, const Polygon_soup& soup, int precision)
     }
     b += '\n';
     out.flush_if_large();
-  }
+  });
 }
 
 } // namespace genmesh::detail::io

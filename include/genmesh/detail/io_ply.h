@@ -162,7 +162,7 @@ inline Polygon_soup read_ply(const File_content& file) {
   for (std::size_t i = 0; i < vertex->properties.size(); ++i) {
     const auto& p = vertex->properties[i];
     for (int k = 0; k < 3; ++k)
-      if (p.name == std::string_view("xyz" + k, 1) && !p.is_list && xyz[k] < 0) xyz[k] = static_cast<int>(i);
+      if (p.name == std::string_view("xyz").substr(static_cast<std::size_t>(k), 1) && !p.is_list && xyz[k] < 0) xyz[k] = static_cast<int>(i);
   }
   for (int k = 0; k < 3; ++k)
     if (xyz[k] < 0)
@@ -357,9 +357,13 @@ inline Polygon_soup read_ply(const File_content& file) {
   return soup;
 }
 
-inline void write_ply(Atomic_file& out, const Polygon_soup& soup, bool binary, int precision) {
+/// Writes `soup` (Soup_source or detail::Soup_view) as PLY.
+template <class Source>
+void write_ply(Atomic_file& out, const Source& soup, bool binary, int precision) {
   std::size_t max_corners = 0;
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) max_corners = std::max(max_corners, soup.face_size(f));
+  soup.for_each_face([&](std::size_t, std::span<const Polygon_soup::Index> c, auto) {
+    max_corners = std::max(max_corners, c.size());
+  });
   // uchar counts and int indices are what every PLY reader accepts; wider
   // types only when the soup needs them.
   const bool wide_count = max_corners > 255;
@@ -375,9 +379,8 @@ inline void write_ply(Atomic_file& out, const Polygon_soup& soup, bool binary, i
   b += wide_count ? "uint " : "uchar ";
   b += wide_index ? "uint" : "int";
   b += " vertex_indices\nend_header\n";
-  for (std::size_t v = 0; v < soup.num_points(); ++v) {
-    check_point_for_write(soup, v, out.name());
-    const auto& p = soup.points[v];
+  soup.for_each_point([&](std::size_t v, const Eigen::Vector3d& p) {
+    check_point_for_write(p, v, out.name());
     if (binary) {
       store_le(b, p.x());
       store_le(b, p.y());
@@ -386,10 +389,9 @@ inline void write_ply(Atomic_file& out, const Polygon_soup& soup, bool binary, i
       append_point(b, p, precision);
     }
     out.flush_if_large();
-  }
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    check_face_for_write(soup, f, out.name());
-    const auto c = soup.face(f);
+  });
+  soup.for_each_face([&](std::size_t f, std::span<const Polygon_soup::Index> c, auto) {
+    check_face_for_write(c, f, soup.num_points(), out.name());
     if (binary) {
       if (wide_count) store_le(b, static_cast<std::uint32_t>(c.size()));
       else b += static_cast<char>(static_cast<std::uint8_t>(c.size()));
@@ -406,7 +408,7 @@ inline void write_ply(Atomic_file& out, const Polygon_soup& soup, bool binary, i
       b += '\n';
     }
     out.flush_if_large();
-  }
+  });
 }
 
 } // namespace genmesh::detail::io

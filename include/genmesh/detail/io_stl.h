@@ -164,13 +164,15 @@ inline Polygon_soup read_stl(const File_content& file) {
   return stl_is_ascii(file.data) ? read_stl_ascii(file) : read_stl_binary(file);
 }
 
-inline void write_stl(Atomic_file& out, const Polygon_soup& soup, bool binary, int precision) {
+/// Writes `soup` (Soup_source or detail::Soup_view) as STL.
+template <class Source>
+void write_stl(Atomic_file& out, const Source& soup, bool binary, int precision) {
   std::string& b = out.buffer;
   std::uint64_t triangles = 0;
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    check_face_for_write(soup, f, out.name());
-    triangles += soup.face_size(f) - 2;
-  }
+  soup.for_each_face([&](std::size_t f, std::span<const Polygon_soup::Index> c, auto) {
+    check_face_for_write(c, f, soup.num_points(), out.name());
+    triangles += c.size() - 2;
+  });
   if (binary) {
     if (triangles > std::numeric_limits<std::uint32_t>::max())
       throw io_error(out.name(), "cannot write: too many triangles for binary STL");
@@ -181,16 +183,16 @@ inline void write_stl(Atomic_file& out, const Polygon_soup& soup, bool binary, i
   } else {
     b += "solid genmesh\n";
   }
-  for (std::size_t v = 0; v < soup.num_points(); ++v) {
-    check_point_for_write(soup, v, out.name());
-    if (binary && soup.points[v].cwiseAbs().maxCoeff() > std::numeric_limits<float>::max())
+  soup.for_each_point([&](std::size_t v, const Eigen::Vector3d& p) {
+    check_point_for_write(p, v, out.name());
+    if (binary && p.cwiseAbs().maxCoeff() > std::numeric_limits<float>::max())
       throw io_error(out.name(), "cannot write: point " + std::to_string(v) +
                                      " is out of the float range of binary STL");
-  }
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    const auto c = soup.face(f);
+  });
+  soup.template for_each_face<true>([&](std::size_t, std::span<const Polygon_soup::Index> c,
+                                        std::span<const Eigen::Vector3d> corner) {
     for (std::size_t k = 1; k + 1 < c.size(); ++k) {
-      const Eigen::Vector3d* t[3] = {&soup.points[c[0]], &soup.points[c[k]], &soup.points[c[k + 1]]};
+      const Eigen::Vector3d* t[3] = {&corner[0], &corner[k], &corner[k + 1]};
       Eigen::Vector3d n = (*t[1] - *t[0]).cross(*t[2] - *t[0]);
       const double len = n.norm();
       n = len > 0 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::Zero();
@@ -217,7 +219,7 @@ inline void write_stl(Atomic_file& out, const Polygon_soup& soup, bool binary, i
       }
     }
     out.flush_if_large();
-  }
+  });
   if (!binary) b += "endsolid genmesh\n";
 }
 
