@@ -389,7 +389,8 @@ bool can_collapse_edge(edge_descriptor_t<G> e, const G& g) {
   // The corners of p's other faces that are not p's neighbours: the targets
   // from next(next(x)) to before prev(x). A triangle has none (prev(x) ==
   // next(next(x)); prev shares x's cache line on the pointer backends).
-  const auto q = target(pq, g), ft = face(pq, g), fb = face(qp, g);
+  const auto q = target(pq, g);   // one declaration per type: clang refuses mixed deductions
+  const auto ft = face(pq, g), fb = face(qp, g);
   auto x = qp; // the halfedges into p
   do {
     const auto f = face(x, g);
