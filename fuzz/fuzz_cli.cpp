@@ -26,11 +26,11 @@ void write_text(const std::string& path, const std::string& text) {
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   const auto dir = std::filesystem::temp_directory_path() / ("genmesh_fuzz_cli." + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
-  fuzz_paths = {(dir / "in.off").string(), (dir / "bad.off").string(), (dir / "rep.off").string(),
-                (dir / "creases.txt").string(), (dir / "out").string()};
-  write_text(fuzz_paths.in, genmesh_fuzz::cli_cube_off);
-  write_text(fuzz_paths.bad, genmesh_fuzz::cli_fin_off);
-  write_text(fuzz_paths.rep, genmesh_fuzz::cli_repeat_off);
+  fuzz_paths = {(dir / "in.off").string(),      (dir / "bad.off").string(), (dir / "rep.off").string(),
+                (dir / "creases.txt").string(), (dir / "out").string(),     (dir / "tri.off").string()};
+  genmesh_fuzz::write_cli_meshes(fuzz_paths);
+  static const std::filesystem::path made = dir;
+  std::atexit([] { std::filesystem::remove_all(made); });
   return 0;
 }
 

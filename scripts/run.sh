@@ -5,6 +5,9 @@
 #   scripts/run.sh test   install what is missing, build, run the whole test suite
 #   scripts/run.sh setup  only install packages and fetch the real test meshes
 #   scripts/run.sh bench  set up, build the benchmarks and run them
+#   scripts/run.sh fuzz [SECONDS] [TARGET...]
+#                         install clang too, then the bounded fuzz run
+#                         (scripts/fuzz.sh, docs/fuzzing.md)
 #
 # Packages come from Debian 12 (apt-get; as root, or through sudo). The real
 # meshes come from Debian's libcgal-demo package, extracted (not installed)
@@ -86,10 +89,15 @@ case "${1:-}" in
     configure
     cmake --build "$build" -j "$jobs"
     ctest --test-dir "$build" --output-on-failure -j "$jobs" ;;
+  fuzz)
+    shift
+    packages+=(clang libclang-rt-14-dev)   # libFuzzer's runtime is only recommended by clang
+    setup
+    GENMESH_JOBS="$jobs" exec "$root/scripts/fuzz.sh" "$@" ;;
   bench)
     setup
     configure -DGENMESH_BUILD_BENCHMARKS=ON
     cmake --build "$build" -j "$jobs"
     "$build/benchmarks/genmesh_benchmarks" ;;
-  *) echo "usage: scripts/run.sh demo|test|setup|bench" >&2; exit 2 ;;
+  *) echo "usage: scripts/run.sh demo|test|setup|bench|fuzz" >&2; exit 2 ;;
 esac

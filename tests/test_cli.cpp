@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -35,10 +36,17 @@ struct Cli_run {
   std::string err;  // stderr
 };
 
+// The program under test: the build's genmesh, or $GENMESH_TEST_CLI (to
+// replay these tests against another build, e.g. one from before a fix).
+const char* cli_program() {
+  const char* other = std::getenv("GENMESH_TEST_CLI");
+  return other && *other ? other : GENMESH_CLI;
+}
+
 // Runs the genmesh program with `args` (already shell-quoted where needed).
 Cli_run genmesh(const std::string& args) {
   const std::string err_file = tmp_path("cli_stderr.txt");
-  const std::string cmd = std::string(GENMESH_CLI) + " " + args + " 2>" + err_file;
+  const std::string cmd = std::string(cli_program()) + " " + args + " 2>" + err_file;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) throw std::runtime_error("popen failed: " + cmd);
   std::string out;
@@ -323,22 +331,35 @@ std::string shell_quote(const std::string& a) {
 }
 
 // The regression corpus of the CLI target (tests/fuzz/regressions/cli): one
-// file per finding, "# expect N" then the fuzz input (genmesh_fuzz::
-// parse_cli_case). Each must exit N, keep its messages short, and name a
-// file (or give the usage) when it fails.
+// file per finding, "# expect N", optional "# message TEXT" lines (TEXT must
+// appear in the output; @in, @bad, @rep, @creases stand for the files), then
+// the fuzz input (genmesh_fuzz::parse_cli_case). Each must exit N, print its
+// messages, keep them short, and name a file (or give the usage) when it
+// fails. Every case failed on the program before the fixes (docs/fuzzing.md).
 TEST(CliHostile, RegressionCorpusGivesTheDocumentedExitCodes) {
   const std::filesystem::path dir = std::filesystem::path(GENMESH_SOURCE_DIR) / "tests/fuzz/regressions/cli";
   const genmesh_fuzz::Cli_paths paths{tmp_path("corpus_in.off"), tmp_path("corpus_bad.off"), tmp_path("corpus_rep.off"),
-                                      tmp_path("corpus_creases.txt"), tmp_path("corpus_out")};
-  write_file(paths.in, genmesh_fuzz::cli_cube_off);
-  write_file(paths.bad, genmesh_fuzz::cli_fin_off);
-  write_file(paths.rep, genmesh_fuzz::cli_repeat_off);
+                                      tmp_path("corpus_creases.txt"), tmp_path("corpus_out"), tmp_path("corpus_tri.off")};
+  genmesh_fuzz::write_cli_meshes(paths);
+  const auto substitute = [&](std::string m) {
+    for (const auto& [key, path] : {std::pair<std::string, std::string>{"@creases", paths.creases},
+                                    {"@in", paths.in}, {"@bad", paths.bad}, {"@rep", paths.rep}, {"@tri", paths.tri}})
+      if (const auto at = m.find(key); at != std::string::npos) m.replace(at, key.size(), path);
+    return m;
+  };
   std::size_t cases = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     const std::string text = read_file(entry.path().string());
     ASSERT_TRUE(text.starts_with("# expect ")) << entry.path();
     const int expected = std::stoi(text.substr(9));
-    const genmesh_fuzz::Cli_case c = genmesh_fuzz::parse_cli_case(std::string_view(text).substr(text.find('\n') + 1), paths);
+    std::size_t body = text.find('\n') + 1;
+    std::vector<std::string> messages;
+    while (text.compare(body, 10, "# message ") == 0) {
+      const std::size_t nl = text.find('\n', body);
+      messages.push_back(substitute(text.substr(body + 10, nl - body - 10)));
+      body = nl + 1;
+    }
+    const genmesh_fuzz::Cli_case c = genmesh_fuzz::parse_cli_case(std::string_view(text).substr(body), paths);
     ASSERT_TRUE(c.runnable) << entry.path();
     write_file(paths.creases, c.creases);
     std::string args;
@@ -348,15 +369,33 @@ TEST(CliHostile, RegressionCorpusGivesTheDocumentedExitCodes) {
     EXPECT_EQ(r.exit_code, expected) << r.out << r.err;
     EXPECT_LT(r.err.size(), 4000u) << r.err.substr(0, 4000);
     EXPECT_LT(r.out.size(), 4000u);
+    for (const auto& m : messages) EXPECT_NE((r.err + r.out).find(m), std::string::npos) << m << "\nnot in: " << r.err << r.out;
     if (expected != 0) {
       bool named = r.err.find("usage") != std::string::npos;
-      for (const auto& f : {paths.in, paths.bad, paths.rep, paths.creases, std::string("/:")})
+      for (const auto& f : {paths.in, paths.bad, paths.rep, paths.creases, paths.tri, std::string("/:")})
         named = named || r.err.find(f) != std::string::npos || r.out.find(f) != std::string::npos;
       EXPECT_TRUE(named) << "no file named in: " << r.err << r.out;
     }
     ++cases;
   }
   EXPECT_GE(cases, 15u);
+}
+
+// The CLI target's seed corpus (genmesh_fuzz::cli_seeds) runs as each seed
+// says: the fuzzer starts from command lines that work.
+TEST(CliHostile, SeedCorpusGivesItsExitCodes) {
+  const genmesh_fuzz::Cli_paths paths{tmp_path("seed_in.off"), tmp_path("seed_bad.off"), tmp_path("seed_rep.off"),
+                                      tmp_path("seed_creases.txt"), tmp_path("seed_out"), tmp_path("seed_tri.off")};
+  genmesh_fuzz::write_cli_meshes(paths);
+  for (const auto& seed : genmesh_fuzz::cli_seeds) {
+    const genmesh_fuzz::Cli_case c = genmesh_fuzz::parse_cli_case(seed.text, paths);
+    ASSERT_TRUE(c.runnable) << seed.name;
+    write_file(paths.creases, c.creases);
+    std::string args;
+    for (const auto& a : c.args) args += shell_quote(a) + " ";
+    const Cli_run r = genmesh(args);
+    EXPECT_EQ(r.exit_code, seed.exit_code) << seed.name << ": genmesh " << args << "\n" << r.out << r.err;
+  }
 }
 
 TEST(CliHostile, ErrorsNameTheFileAndTheLineAndStayShort) {
@@ -422,6 +461,25 @@ TEST(CliHostile, SubdivideRefusesWhatCannotFitWithTheFigures) {
 
 // Ctrl-C, TERM or HUP while the output is written: the temporary is removed,
 // the old output survives, the program dies of the signal.
+// Out of memory (the prediction allowed it, the system did not): exit 3,
+// saying while doing what and on which file (the stage is kept while the
+// exception unwinds).
+TEST(CliHostile, OutOfMemorySaysWhileDoingWhatOnWhichFile) {
+  const std::string cube = tmp_path("oom_cube.off");
+  write_file(cube, genmesh_fuzz::cli_cube_off);
+  const std::string cmd = "sh -c 'ulimit -v 120000; exec " + std::string(cli_program()) + " subdivide " + cube + " " +
+                          tmp_path("oom.off") + " --scheme catmull-clark --levels 9 --max-memory 1T' 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string out;
+  std::array<char, 4096> buf;
+  while (std::size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
+  const int status = pclose(pipe);
+  ASSERT_TRUE(WIFEXITED(status)) << out;
+  EXPECT_EQ(WEXITSTATUS(status), 3) << out;
+  EXPECT_NE(out.find("genmesh: subdividing " + cube + ": out of memory"), std::string::npos) << out;
+}
+
 TEST(CliHostile, SignalsWhileWritingRemoveTheTemporary) {
   const std::filesystem::path dir = tmp_path("signals");
   std::filesystem::remove_all(dir);
@@ -437,7 +495,7 @@ TEST(CliHostile, SignalsWhileWritingRemoveTheTemporary) {
       if (pid == 0) {
         std::freopen("/dev/null", "w", stdout);
         const std::string l = std::to_string(levels);
-        execl(GENMESH_CLI, "genmesh", "subdivide", cube.c_str(), out.c_str(), "--scheme", "catmull-clark", "--levels",
+        execl(cli_program(), "genmesh", "subdivide", cube.c_str(), out.c_str(), "--scheme", "catmull-clark", "--levels",
               l.c_str(), static_cast<char*>(nullptr));
         _exit(127);
       }

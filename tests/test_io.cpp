@@ -23,6 +23,8 @@
 #include <numbers>
 #include <optional>
 #include <random>
+#include <set>
+#include <sstream>
 #include <thread>
 
 #include <csignal>
@@ -107,15 +109,7 @@ void expect_read_error(const std::string& name, const std::string& content, cons
 
 /// A soup with coordinates that have no short decimal form, mixed face sizes
 /// and one face of more than 255 corners (needs a wider PLY count type).
-Polygon_soup awkward_soup() {
-  Polygon_soup s = genmesh::make_icosphere(1);
-  for (auto& p : s.points) p = p * (1.0 / 3.0) + Eigen::Vector3d(std::numbers::pi, -1e-300, 1e22);
-  s.add_face({0, 1, 2, 3, 4});
-  std::vector<Polygon_soup::Index> big;
-  for (Polygon_soup::Index i = 0; i < 300; ++i) big.push_back(i % static_cast<Polygon_soup::Index>(s.num_points()));
-  s.add_face(big);
-  return s;
-}
+using genmesh_fuzz::awkward_soup;
 
 std::string describe(const Polygon_soup& s) {
   return std::to_string(s.num_points()) + " points, " + std::to_string(s.num_faces()) + " faces";
@@ -871,44 +865,75 @@ TEST(IoHostile, RemovePendingTemporariesRemovesAWriteInProgress) {
 
 // ---- fuzz corpora ------------------------------------------------------------
 
-// Writes the seed corpus of the reader fuzz targets (every generated mesh in
-// every format and encoding, plus real meshes' first bytes are not needed:
-// the fuzzer grows them) and replays it with the regression corpus through
-// the targets' bodies: each input is read or refused the documented way.
+// Writes the seed corpus of the fuzz targets (genmesh_fuzz::write_seed_corpus:
+// every generated mesh in every format and encoding, and command lines) and
+// replays the readers' part with the regression corpus through the targets'
+// bodies: each input is read or refused the documented way.
 TEST(FuzzCorpus, SeedsAreWrittenAndEveryCorpusInputIsReadOrRefused) {
   const fs::path seeds = GENMESH_FUZZ_SEED_DIR;
-  const std::vector<std::pair<std::string, Polygon_soup>> meshes{
-      {"tetrahedron", genmesh::make_tetrahedron()}, {"cube", genmesh::make_cube()},
-      {"icosphere1", genmesh::make_icosphere(1)},   {"grid_hole", genmesh::make_grid_with_hole(4)},
-      {"torus", genmesh::make_torus(5, 4, false)},  {"awkward", awkward_soup()}};
-  for (const char* fmt : {"off", "obj", "ply", "stl"}) fs::create_directories(seeds / fmt);
-  for (const auto& [name, soup] : meshes) {
-    for (const char* fmt : {"off", "obj", "ply", "stl"}) {
-      write_soup((seeds / fmt / (name + "." + fmt)).string(), soup);
-      if (std::string(fmt) == "ply" || std::string(fmt) == "stl")
-        write_soup((seeds / fmt / (name + "_binary." + fmt)).string(), soup, {.binary = true});
-    }
-  }
-  const auto format_of = [](const fs::path& p) {
-    const std::string e = p.extension().string();
-    return e == ".off" ? File_format::off : e == ".obj" ? File_format::obj : e == ".ply" ? File_format::ply : File_format::stl;
-  };
+  genmesh_fuzz::write_seed_corpus(seeds);
   std::size_t inputs = 0;
-  for (const fs::path& dir : {seeds / "off", seeds / "obj", seeds / "ply", seeds / "stl",
-                              fs::path(GENMESH_SOURCE_DIR) / "tests/fuzz/regressions/reader"}) {
+  for (const fs::path& dir : {seeds / "off", seeds / "obj", seeds / "ply", seeds / "stl"}) {
     for (const auto& e : fs::directory_iterator(dir)) {
       SCOPED_TRACE(e.path().string());
       const std::string data = read_bytes(e.path().string());
-      genmesh_fuzz::read_one(format_of(e.path()), reinterpret_cast<const std::uint8_t*>(data.data()), data.size());
-      // And through the file API: read or an io_error, never anything else.
-      try {
-        (void)read_soup(e.path());
-      } catch (const io_error&) {
-      }
+      genmesh_fuzz::read_one(genmesh_fuzz::format_of(e.path().string()), reinterpret_cast<const std::uint8_t*>(data.data()), data.size());
+      // The generated meshes read back.
+      EXPECT_GT(read_soup(e.path()).num_faces(), 0u);
       ++inputs;
     }
   }
-  EXPECT_GE(inputs, 6u * 6u + 10u);
+  EXPECT_EQ(inputs, 6u * 6u);
+  EXPECT_EQ(std::distance(fs::directory_iterator(seeds / "cli"), fs::directory_iterator()),
+            static_cast<std::ptrdiff_t>(genmesh_fuzz::cli_seeds.size()));
+}
+
+// The regression corpus of the reader targets: each input, one per reader
+// finding of issue 14, reads as its line in expected.txt says (the counts, or
+// an io_error with that text) — each line failed before the fix — and goes
+// through the target's body unharmed.
+TEST(FuzzCorpus, RegressionInputsReadAsExpected) {
+  const fs::path dir = fs::path(GENMESH_SOURCE_DIR) / "tests/fuzz/regressions/reader";
+  std::istringstream expected(read_bytes((dir / "expected.txt").string()));
+  std::set<std::string> listed;
+  for (std::string line; std::getline(expected, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream in(line);
+    std::string name, what;
+    in >> name >> what;
+    SCOPED_TRACE(line);
+    listed.insert(name);
+    const fs::path p = dir / name;
+    const std::string data = read_bytes(p.string());
+    genmesh_fuzz::read_one(genmesh_fuzz::format_of(name), reinterpret_cast<const std::uint8_t*>(data.data()), data.size());
+    if (what == "error") {
+      std::string text;
+      std::getline(in >> std::ws, text);
+      try {
+        (void)read_soup(p);
+        ADD_FAILURE() << "read without an error";
+      } catch (const io_error& e) {
+        EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+      }
+    } else {
+      std::size_t faces = 0;
+      in >> faces;
+      try {
+        const Polygon_soup s = read_soup(p);
+        EXPECT_EQ(s.num_points(), std::stoul(what));
+        EXPECT_EQ(s.num_faces(), faces);
+      } catch (const io_error& e) {
+        ADD_FAILURE() << e.what();
+      }
+    }
+  }
+  std::size_t files = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.path().filename() == "expected.txt") continue;
+    EXPECT_TRUE(listed.contains(e.path().filename().string())) << e.path() << " has no line in expected.txt";
+    ++files;
+  }
+  EXPECT_GE(files, 10u);
 }
 
 // ---- real meshes against CGAL::IO ----------------------------------------------------

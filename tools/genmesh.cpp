@@ -43,6 +43,7 @@
 #include <csignal>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <fstream>
 #include <unistd.h>
 #include <functional>
@@ -70,11 +71,18 @@ constexpr int exit_too_large = 3;
 
 // What the program is doing, for an error that would otherwise name no file
 // (out of memory, a library exception): "reading X", "subdividing X", ...
+// An exception leaving a stage keeps it as failed_stage (the innermost one):
+// unwinding restores current_stage before main's handler could read it.
 std::string current_stage;
+std::string failed_stage;
 struct Stage {
   std::string saved;
+  int exceptions = std::uncaught_exceptions();
   explicit Stage(std::string s) : saved(std::exchange(current_stage, std::move(s))) {}
-  ~Stage() { current_stage = std::move(saved); }
+  ~Stage() {
+    if (std::uncaught_exceptions() > exceptions && failed_stage.empty()) failed_stage = current_stage;
+    current_stage = std::move(saved);
+  }
 };
 
 // The refusal of work that would not fit (exit 3).
@@ -543,7 +551,8 @@ struct Subdivide_progress : genmesh::Mutation_visitor {
 
 // One call of the chosen scheme for every level (the library reserves the
 // last level's size once and carries the creases from level to level in the
-// crease map); creases is genmesh::Default_map or a crease map of mesh.
+// crease map); creases is genmesh::Default_map or a crease map of mesh. The
+// options name Creases: clang before 17 deduces no aggregate's arguments.
 template <class Mesh, class Creases>
 genmesh::Subdivision_result subdivide_all(Mesh& mesh, const Args& a, const Creases& creases,
                                           Subdivide_progress& progress) {
@@ -551,10 +560,10 @@ genmesh::Subdivision_result subdivide_all(Mesh& mesh, const Args& a, const Creas
   const int levels = a.levels;
   if (a.scheme == "loop")
     return genmesh::loop_subdivision(
-        mesh, genmesh::Loop_options{.iterations = levels, .boundary = boundary, .crease_map = creases}, progress);
+        mesh, genmesh::Loop_options<Creases>{.iterations = levels, .boundary = boundary, .crease_map = creases}, progress);
   if (a.scheme == "catmull-clark")
     return genmesh::catmull_clark_subdivision(
-        mesh, genmesh::Catmull_clark_options{.iterations = levels, .boundary = boundary, .crease_map = creases},
+        mesh, genmesh::Catmull_clark_options<Creases>{.iterations = levels, .boundary = boundary, .crease_map = creases},
         progress);
   if (a.scheme == "sqrt3")
     return genmesh::sqrt3_subdivision(mesh, {.iterations = levels, .boundary = boundary}, progress);
@@ -754,15 +763,24 @@ genmesh::Simplification_result simplify_with(Mesh& mesh, const Args& a, bool pro
 }
 
 int cmd_simplify(const Args& a) {
-  genmesh::Polygon_soup soup = genmesh::read_soup(a.files[0]);
+  genmesh::Polygon_soup soup = read_input(a, a.files[0]);
   const bool progress = !a.json && isatty(STDERR_FILENO);
   return with_backend(a.backend, [&](auto& mesh) {
-    genmesh::build_mesh(soup, mesh, {.repair = a.repair});
+    try {
+      genmesh::build_mesh(soup, mesh, {.repair = a.repair});
+    } catch (const genmesh::invalid_input& e) {
+      return report_unbuildable(a.files[0], e);
+    }
     const auto t0 = std::chrono::steady_clock::now();
     genmesh::Simplification_result r;
-    if (a.policy == "probabilistic") r = simplify_with<genmesh::Probabilistic_quadrics>(mesh, a, progress);
-    else if (a.policy == "length") r = simplify_with<genmesh::Edge_length>(mesh, a, progress);
-    else r = simplify_with<genmesh::Plane_quadrics>(mesh, a, progress);
+    try {
+      if (a.policy == "probabilistic") r = simplify_with<genmesh::Probabilistic_quadrics>(mesh, a, progress);
+      else if (a.policy == "length") r = simplify_with<genmesh::Edge_length>(mesh, a, progress);
+      else r = simplify_with<genmesh::Plane_quadrics>(mesh, a, progress);
+    } catch (const genmesh::invalid_input& e) {
+      // simplify refused the mesh ("face 0 is not a triangle"): name the file (issue 14).
+      throw genmesh::io_error(a.files[0], "simplify refused it: " + bounded(e.what()));
+    }
     const double seconds = seconds_since(t0);
     genmesh::Mesh_report report = genmesh::check_mesh(mesh);
     genmesh::write_mesh(a.files[1], mesh, {.binary = a.binary});
@@ -921,7 +939,7 @@ std::size_t count_self_intersections(const Mesh& mesh, const genmesh::Polygon_so
 int cmd_measure(const Args& a) {
   const bool progress = !a.json && isatty(STDERR_FILENO);
   std::vector<genmesh::Polygon_soup> soups;
-  for (const auto& f : a.files) soups.push_back(genmesh::read_soup(f));
+  for (const auto& f : a.files) soups.push_back(read_input(a, f));
   return with_backend(a.backend, [&](auto& first) {
     using Mesh = std::remove_reference_t<decltype(first)>;
     std::vector<Mesh> meshes(soups.size());
@@ -929,7 +947,7 @@ int cmd_measure(const Args& a) {
       try {
         genmesh::build_mesh(soups[i], meshes[i]);
       } catch (const genmesh::invalid_input& e) {
-        throw genmesh::io_error(a.files[i], e.what());
+        return report_unbuildable(a.files[i], e);   // exit 1, as the other commands (issue 14)
       }
     }
     const auto t0 = std::chrono::steady_clock::now();
@@ -1051,7 +1069,8 @@ void install_signal_handlers() {
 
 // "genmesh: <stage>: <message>" for errors that do not name their file.
 std::string in_stage(const std::string& message) {
-  return current_stage.empty() ? message : current_stage + ": " + message;
+  const std::string& stage = current_stage.empty() ? failed_stage : current_stage;
+  return stage.empty() ? message : stage + ": " + message;
 }
 
 int main(int argc, char** argv) {
