@@ -10,12 +10,15 @@
 #include "genmesh_fuzz.h"
 
 #include <cstdlib>
+#include <fcntl.h>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 
 namespace {
 
 genmesh_fuzz::Cli_paths fuzz_paths;
+std::string scratch_dir;   // the program runs here: fuzzed output names land in it
 
 void write_text(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
@@ -31,6 +34,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
   genmesh_fuzz::write_cli_meshes(fuzz_paths);
   static const std::filesystem::path made = dir;
   std::atexit([] { std::filesystem::remove_all(made); });
+  scratch_dir = dir.string();
   return 0;
 }
 
@@ -47,7 +51,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
+  const int home = open(".", O_RDONLY | O_DIRECTORY);
+  if (home < 0 || chdir(scratch_dir.c_str()) != 0) std::abort();
   const int rc = genmesh_cli_main(static_cast<int>(args.size()), argv.data());
+  if (fchdir(home) != 0) std::abort();
+  close(home);
   if (rc < 0 || rc > 3) std::abort();
   return 0;
 }

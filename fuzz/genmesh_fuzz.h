@@ -88,7 +88,9 @@ inline void read_one(genmesh::File_format format, const std::uint8_t* data, std:
 /// "@tri" for `tri` (a small valid triangle mesh),
 /// "@creases" for `creases` (where the caller writes the crease content) and
 /// "@out.EXT" for `out_stem` + ".EXT". A "demo" command is dropped (it runs
-/// every algorithm on every backend: seconds, not a parse).
+/// every algorithm on every backend: seconds, not a parse), and so is an
+/// argument holding a '/' of its own (but "/" alone): a fuzzed output path
+/// could name any file.
 struct Cli_case {
   std::vector<std::string> args;
   std::string creases;
@@ -122,7 +124,12 @@ inline Cli_case parse_cli_case(std::string_view text, const Cli_paths& paths) {
     else if (a == "@creases") a = paths.creases;
     else if (a == "@tri") a = paths.tri;
     else if (a.starts_with("@out.") && a.size() <= 9) a = paths.out_stem + a.substr(4);
-    if (a.find('\0') != std::string::npos) c.runnable = false;
+    // No NUL (argv cannot hold it), and no path of the fuzzer's own: it
+    // could name (and overwrite) any file. The CLI target runs in a scratch
+    // folder, so plain names stay there; "/" alone is a directory to refuse.
+    const bool substituted = a != line;
+    if (a.find('\0') != std::string::npos || (!substituted && a != "/" && a.find('/') != std::string::npos))
+      c.runnable = false;
     c.args.push_back(std::move(a));
     if (nl == text.size()) break;
   }
@@ -159,6 +166,17 @@ inline genmesh::Polygon_soup awkward_soup() {
   return s;
 }
 
+/// A soup check_soup() refuses: a face and its reverse (a duplicate), and a
+/// face visiting a point twice (what the incidence backend reports).
+inline genmesh::Polygon_soup repeats_soup() {
+  genmesh::Polygon_soup s;
+  s.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  s.add_face({0, 1, 2});
+  s.add_face({2, 1, 0});
+  s.add_face({0, 1, 2, 0});
+  return s;
+}
+
 /// A command line (parse_cli_case's format) the CLI target starts from, and
 /// the exit code it gives (replayed by tests/test_cli.cpp).
 struct Cli_seed {
@@ -190,14 +208,15 @@ inline const std::vector<Cli_seed> cli_seeds{
 };
 
 /// Writes the seed corpus: for each reader format a folder DIR/FORMAT with
-/// the generated meshes (and awkward_soup()) in that format, ASCII and, for
+/// the generated meshes (and awkward_soup(), repeats_soup()) in that format, ASCII and, for
 /// PLY and STL, binary; DIR/cli with cli_seeds. Used by the tests
 /// (tests/test_io.cpp) and by scripts/fuzz.sh (through fuzz/make_seeds.cpp).
 inline void write_seed_corpus(const std::filesystem::path& dir) {
   const std::vector<std::pair<std::string, genmesh::Polygon_soup>> meshes{
       {"tetrahedron", genmesh::make_tetrahedron()}, {"cube", genmesh::make_cube()},
       {"icosphere1", genmesh::make_icosphere(1)},   {"grid_hole", genmesh::make_grid_with_hole(4)},
-      {"torus", genmesh::make_torus(5, 4, false)},  {"awkward", awkward_soup()}};
+      {"torus", genmesh::make_torus(5, 4, false)},  {"awkward", awkward_soup()},
+      {"repeats", repeats_soup()}};
   for (const std::string fmt : {"off", "obj", "ply", "stl"}) {
     std::filesystem::create_directories(dir / fmt);
     for (const auto& [name, soup] : meshes) {

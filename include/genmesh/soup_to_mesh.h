@@ -277,11 +277,6 @@ Build_report build_mesh(const Polygon_soup& soup, G& g, const Build_options& opt
 
 namespace detail {
 
-template <class G>
-std::size_t face_count(const G& g) {
-  return static_cast<std::size_t>(num_faces(g));
-}
-
 /// g read as a soup without copying it: vertices numbered 0..n-1 in
 /// iteration order, faces in iteration order, each face's corners rotated to
 /// start at its lowest number. What to_soup() and the mesh writers
@@ -297,14 +292,17 @@ class Soup_view {
   using Index = Polygon_soup::Index;
 
   explicit Soup_view(const G& g)
-      : g_(g), points_(get(vertex_point, const_cast<G&>(g))),   // HasVertexPoints promises get() on a non-const graph only; the map is only read
-        num_faces_(face_count(g)) {
+      // HasVertexPoints promises get() on a non-const graph only; the map is only read.
+      : g_(g), points_(get(vertex_point, const_cast<G&>(g))) {
     if constexpr (HasIndexMap<G, vertex_index_t>) number_.assign(index_bound(vertex_index, g), k_null);
     for (V v : vertices(g)) {
       const auto n = static_cast<std::uint32_t>(num_points_++);
       if constexpr (HasIndexMap<G, vertex_index_t>) number_[vindex(v)] = n;
       else numbers_.emplace(v, n);
     }
+    // Counted, not num_faces(g): on CGAL::Surface_mesh that is the index
+    // bound, removed faces included.
+    for ([[maybe_unused]] auto f : faces(g)) ++num_faces_;
   }
 
   std::size_t num_points() const noexcept { return num_points_; }
