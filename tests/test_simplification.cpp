@@ -7,12 +7,15 @@
 
 #include <genmesh/generators.h>
 #include <genmesh/io.h>
+#include <genmesh/features.h>
 #include <genmesh/simplification.h>
 #include <genmesh/soup_to_mesh.h>
 #include <genmesh/validity.h>
 
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/LindstromTurk_cost.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/LindstromTurk_placement.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
 #include <gtest/gtest.h>
@@ -20,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <string>
 #include <tuple>
@@ -103,10 +107,11 @@ double min_face_area(const G& g) {
   return m;
 }
 
-enum class Policy { plane, plane_area, probabilistic, length };
-constexpr Policy all_policies[] = {Policy::plane, Policy::plane_area, Policy::probabilistic, Policy::length};
+enum class Policy { plane, plane_area, probabilistic, length, lindstrom_turk };
+constexpr Policy all_policies[] = {Policy::plane, Policy::plane_area, Policy::probabilistic, Policy::length,
+                                   Policy::lindstrom_turk};
 const char* name(Policy p) {
-  const char* n[] = {"plane", "plane_area", "probabilistic", "length"};
+  const char* n[] = {"plane", "plane_area", "probabilistic", "length", "lindstrom_turk"};
   return n[static_cast<int>(p)];
 }
 
@@ -123,6 +128,9 @@ genmesh::Simplification_result run(G& g, Policy p, double ratio,
   case Policy::length:
     return genmesh::simplify(g,
                              genmesh::Simplification_options<genmesh::Edge_length>{.target_ratio = ratio, .border = b});
+  case Policy::lindstrom_turk:
+    return genmesh::simplify(
+        g, genmesh::Simplification_options<genmesh::Lindstrom_turk>{.target_ratio = ratio, .border = b});
   }
   return {};
 }
@@ -137,7 +145,7 @@ TYPED_TEST(Simplification, EveryPolicyKeepsTopologyAndEqualsHalfedgeMesh) {
   for (const auto& in : inputs()) {
     for (const Policy p : all_policies) {
       for (const auto b : {genmesh::Border_mode::preserve, genmesh::Border_mode::lock, genmesh::Border_mode::free}) {
-        if (p != Policy::plane && b != genmesh::Border_mode::preserve) continue;
+        if (p != Policy::plane && p != Policy::lindstrom_turk && b != genmesh::Border_mode::preserve) continue;
         const std::string what = in.name + " " + name(p) + " border " + std::to_string(static_cast<int>(b));
         TypeParam g = mesh_of<TypeParam>(in.soup);
         const auto before = genmesh::check_mesh(g);
@@ -319,6 +327,131 @@ TYPED_TEST(Simplification, VisitorSeesEveryCollapse) {
     }
 }
 
+// The cube [-1,1]^3, each face an n × n grid of cells split in two triangles,
+// outward: sharp features (12 lines, 8 corners) on a fine mesh.
+Polygon_soup fine_cube(int n) {
+  Polygon_soup s;
+  std::map<std::tuple<int, int, int>, Polygon_soup::Index> index;
+  auto vertex = [&](int i, int j, int k) {
+    auto [it, fresh] = index.try_emplace({i, j, k}, static_cast<Polygon_soup::Index>(s.points.size()));
+    if (fresh) s.add_point(Eigen::Vector3d(2.0 * i / n - 1, 2.0 * j / n - 1, 2.0 * k / n - 1));
+    return it->second;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = 0; side <= n; side += n)
+      for (int u = 0; u < n; ++u)
+        for (int w = 0; w < n; ++w) {
+          auto at = [&](int du, int dw) {
+            int c[3];
+            c[axis] = side;
+            c[(axis + 1) % 3] = u + du;
+            c[(axis + 2) % 3] = w + dw;
+            return vertex(c[0], c[1], c[2]);
+          };
+          Polygon_soup::Index q[4] = {at(0, 0), at(1, 0), at(1, 1), at(0, 1)};
+          // (axis+1, axis+2, axis) is right-handed: counter-clockwise seen from +axis.
+          if (side == 0) std::swap(q[1], q[3]);
+          s.add_face(std::vector<Polygon_soup::Index>{q[0], q[1], q[2]});
+          s.add_face(std::vector<Polygon_soup::Index>{q[0], q[2], q[3]});
+        }
+  return s;
+}
+
+// On a cube's edge: at least two coordinates at ±1.
+int coordinates_on_faces(const Eigen::Vector3d& p) {
+  int n = 0;
+  for (int i = 0; i < 3; ++i) n += std::abs(std::abs(p[i]) - 1.0) < 1e-12;
+  return n;
+}
+
+// .feature_angle keeps a cube a cube on every policy: every vertex on the
+// surface, the 8 corners in place, every sharp edge of the result on one of
+// the 12 lines, and their total length the lines' (24): no line cut short,
+// no vertex pulled off one.
+TYPED_TEST(Simplification, FeatureLinesStayOnTheirLines) {
+  const Polygon_soup soup = fine_cube(12);
+  for (const Policy p : all_policies) {
+    TypeParam g = mesh_of<TypeParam>(soup);
+    const auto before = genmesh::check_mesh(g);
+    genmesh::Simplification_result r;
+    const double ratio = 0.05;
+    switch (p) {
+    case Policy::lindstrom_turk:
+      r = genmesh::simplify(g, genmesh::Simplification_options<genmesh::Lindstrom_turk>{.target_ratio = ratio,
+                                                                                          .feature_angle = 60.0});
+      break;
+    case Policy::length:
+      r = genmesh::simplify(
+          g, genmesh::Simplification_options<genmesh::Edge_length>{.target_ratio = ratio, .feature_angle = 60.0});
+      break;
+    case Policy::probabilistic:
+      r = genmesh::simplify(g, genmesh::Simplification_options<genmesh::Probabilistic_quadrics>{
+                                   .target_ratio = ratio, .feature_angle = 60.0});
+      break;
+    default:
+      r = genmesh::simplify(g, {.target_ratio = ratio, .policy = {.area_weighted = p == Policy::plane_area},
+                                .feature_angle = 60.0});
+    }
+    const std::string what = name(p);
+    expect_invariants(g, before, what);
+    EXPECT_GT(r.collapses, soup.points.size() / 2) << what;
+    auto pm = get(genmesh::vertex_point, g);
+    using P = genmesh::point_t<TypeParam>;
+    auto pt = [&](auto v) { return genmesh::to_eigen(P(get(pm, v))); };
+    int corners = 0;
+    for (auto v : vertices(g)) {
+      const Eigen::Vector3d x = pt(v);
+      EXPECT_NEAR(x.cwiseAbs().maxCoeff(), 1.0, 1e-12) << what << ": a vertex left the surface";
+      corners += coordinates_on_faces(x) == 3;
+    }
+    EXPECT_EQ(corners, 8) << what;
+    const auto sharp = genmesh::sharp_edges(g, 60.0);
+    double length = 0;
+    for (auto e : edges(g)) {
+      if (!get(sharp, e)) continue;
+      const Eigen::Vector3d a = pt(source(halfedge(e, g), g)), b = pt(target(halfedge(e, g), g));
+      int shared = 0; // coordinates at the same ±1 on both ends
+      for (int i = 0; i < 3; ++i) shared += std::abs(std::abs(a[i]) - 1.0) < 1e-12 && a[i] == b[i];
+      EXPECT_EQ(shared, 2) << what << ": a sharp edge off the cube's lines";
+      length += (b - a).norm();
+    }
+    EXPECT_NEAR(length, 24.0, 1e-9) << what;
+    genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(soup);
+    if (p == Policy::plane) {
+      genmesh::simplify(ref, {.target_ratio = ratio, .feature_angle = 60.0});
+      expect_same_soup(canonical_of(g), canonical_of(ref), what);
+    }
+  }
+}
+
+// .edge_is_constrained: a user line (the grid's middle row, y = 0.5) stays
+// a line from x = 0 to x = 1, its vertices on it, under a free border.
+TYPED_TEST(Simplification, ConstrainedEdgesStay) {
+  const Polygon_soup soup = genmesh::make_grid(20, 20);
+  TypeParam g = mesh_of<TypeParam>(soup);
+  auto pm = get(genmesh::vertex_point, g);
+  using P = genmesh::point_t<TypeParam>;
+  auto pt = [&](auto v) { return genmesh::to_eigen(P(get(pm, v))); };
+  std::set<std::size_t> line;
+  for (auto e : edges(g)) {
+    const auto h = halfedge(e, g);
+    if (pt(source(h, g)).y() == 0.5 && pt(target(h, g)).y() == 0.5)
+      line.insert(static_cast<std::size_t>(get(get(genmesh::edge_index, g), e)));
+  }
+  ASSERT_EQ(line.size(), 20u);
+  const auto r = genmesh::simplify(g, {.target_ratio = 0.05,
+                                       .edge_is_constrained = [&](std::size_t e) { return line.count(e) > 0; }});
+  EXPECT_TRUE(genmesh::check_mesh(g).ok());
+  EXPECT_LE(r.faces, 40u);
+  double length = 0;
+  for (auto e : edges(g)) {
+    const auto h = halfedge(e, g);
+    const Eigen::Vector3d a = pt(source(h, g)), b = pt(target(h, g));
+    if (a.y() == 0.5 && b.y() == 0.5) length += (b - a).norm();
+  }
+  EXPECT_NEAR(length, 1.0, 1e-12);
+}
+
 // ---------------------------------------------------------------------------
 // CGAL's edge_collapse with Garland–Heckbert plane policies as the oracle.
 // ---------------------------------------------------------------------------
@@ -371,6 +504,43 @@ TEST(SimplificationOracle, HausdorffNoWorseThanCgalGarlandHeckbert) {
                   d_ours / d_cgal);
       EXPECT_LE(r.faces, static_cast<std::size_t>(cgal.number_of_faces()) + 1) << file;
       EXPECT_LE(d_ours, (ratio < 0.05 ? 1.4 : 1.05) * d_cgal) << file << " ratio " << ratio;
+    }
+  }
+}
+
+// The same against CGAL's default, Lindstrom–Turk, with genmesh's
+// Lindstrom_turk (same weights, flips-only fold test as CGAL). On the
+// elephant and the shark at 10% both give the same Hausdorff distance to the
+// last digit (measured); on the armadillo the two runs part at some near-tie
+// and genmesh's lands at 1.38x CGAL's at 10% (0.98x at 5%, 0.82x at 2%): LT
+// places vertices off the surface (it preserves volume, not distance), so
+// which collapse happens first decides the maximum. Margin 40% at both
+// ratios: it still fails on a real loss (a limb or a border torn off).
+TEST(SimplificationOracle, HausdorffNoWorseThanCgalLindstromTurk) {
+  namespace SMS = CGAL::Surface_mesh_simplification;
+  using SM = genmesh_test::Surface_mesh;
+  for (const char* file : {"elephant.off", "mech-holes-shark.off", "armadillo.off"}) {
+    const Polygon_soup soup = genmesh::read_soup(genmesh_test::real_mesh(file));
+    const SM input = mesh_of<SM>(soup);
+    for (const double ratio : {0.1, 0.02}) {
+      const auto target = static_cast<std::size_t>(std::ceil(ratio * static_cast<double>(soup.num_faces())));
+      SM cgal = input;
+      const Face_count_stop stop{&cgal, target};
+      SMS::edge_collapse(cgal, stop,
+                         CGAL::parameters::get_cost(SMS::LindstromTurk_cost<SM>())
+                             .get_placement(SMS::LindstromTurk_placement<SM>()));
+      SM ours = input;
+      const auto r = genmesh::simplify(ours, genmesh::Simplification_options<genmesh::Lindstrom_turk>{.target_faces = target});
+      ASSERT_EQ(r.stop_reason, genmesh::Stop_reason::target_faces) << file;
+      SM ours_compact = ours;
+      ours_compact.collect_garbage();
+      cgal.collect_garbage();
+      const double d_ours = hausdorff(input, ours_compact), d_cgal = hausdorff(input, cgal);
+      std::printf("LT %s ratio %.2f: faces genmesh %zu CGAL %zu; Hausdorff genmesh %.6g CGAL %.6g (%.3f)\n", file,
+                  ratio, r.faces, static_cast<std::size_t>(cgal.number_of_faces()), d_ours, d_cgal,
+                  d_ours / d_cgal);
+      EXPECT_LE(r.faces, static_cast<std::size_t>(cgal.number_of_faces()) + 1) << file;
+      EXPECT_LE(d_ours, 1.4 * d_cgal) << file << " ratio " << ratio;
     }
   }
 }

@@ -17,16 +17,19 @@
 
 #include <genmesh/concepts.h>
 #include <genmesh/exceptions.h>
+#include <genmesh/features.h>
 #include <genmesh/local_operations.h>
 #include <genmesh/point_traits.h>
 #include <genmesh/priority_queue.h>
 #include <genmesh/property_maps.h>
+#include <genmesh/simplification/profile.h>
 
 #include <boost/graph/graph_traits.hpp>
 
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -82,13 +85,26 @@ Placement fixed(const Policy& p, const Data& s, const Eigen::Vector3d& a, const 
   else return {s(x), x};
 }
 
+// The per-vertex data of a policy: none for a memoryless one.
+struct No_vertex_data {};
+template <class Policy>
+struct Vertex_data_of {
+  using type = No_vertex_data;
+};
+template <class Policy>
+  requires(!is_memoryless<Policy>)
+struct Vertex_data_of<Policy> {
+  using type = typename Policy::Vertex_data;
+};
+
 template <class G, class Policy>
 class Collapser {
   using V = vertex_descriptor_t<G>;
   using H = halfedge_descriptor_t<G>;
   using E = edge_descriptor_t<G>;
   using F = face_descriptor_t<G>;
-  using Data = typename Policy::Vertex_data;
+  static constexpr bool memoryless = is_memoryless<Policy>;
+  using Data = typename Vertex_data_of<Policy>::type;
   using Options = Simplification_options<Policy>;
 
  public:
@@ -242,6 +258,7 @@ class Collapser {
     hint_.assign(vb, 0);
     refused_.assign(eb, 0);
     edesc_.assign(eb, E{});
+    if constexpr (memoryless) stamp_.assign(eb, 0);
     if (o_.is_locked)
       for (const V v : vertices(g_))
         if (o_.is_locked(vi(v))) locked_[vi(v)] = 1;
@@ -257,7 +274,7 @@ class Collapser {
     }
     // Faces in index order, corners from the lowest index: the same sums on
     // every backend.
-    for (const F f : faces(g_)) {
+    if constexpr (!memoryless) for (const F f : faces(g_)) {
       const H h0 = halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
       std::size_t a = vi(target(h0, g_)), b = vi(target(h1, g_)), c = vi(target(h2, g_));
       if (b < a && b < c) {
@@ -279,12 +296,14 @@ class Collapser {
       const std::size_t a = vi(source(h, g_)), b = vi(target(h, g_)), c = vi(target(next(h, g_), g_));
       if (o_.border == Border_mode::lock) {
         locked_[a] = locked_[b] = 1;
-      } else if (o_.border == Border_mode::preserve) {
+      } else if constexpr (!memoryless) if (o_.border == Border_mode::preserve) {
         const Data q = policy_.border(pos_[a], pos_[b], pos_[c], o_.border_weight);
         data_[a] = simplification::merge(policy_, data_[a], q);
         data_[b] = simplification::merge(policy_, data_[b], q);
       }
     }
+    on_line_.assign(vb, 0);
+    init_features(eb);
     const double deg = std::clamp(o_.max_normal_deviation, 0.0, 180.0);
     cos_max_ = std::max(0.0, std::cos(deg * std::numbers::pi / 180.0));
     queue_ = Mutable_priority_queue<Priority>(eb);
@@ -294,24 +313,147 @@ class Collapser {
       if (evaluate(halfedge(e, g_), pl)) queue_.push(ei(e), priority(halfedge(e, g_), pl.cost));
   }
 
+  // Feature edges (interior edges only: borders follow .border) from
+  // .feature_angle and .edge_is_constrained; what they make of each vertex.
+  void init_features(std::size_t eb) {
+    features_ = o_.feature_angle.has_value() || static_cast<bool>(o_.edge_is_constrained);
+    if (!features_) return;
+    feature_.assign(eb, 0);
+    if (o_.feature_angle) {
+      const double angle = std::clamp(*o_.feature_angle, 0.0, 180.0);
+      const auto sharp = genmesh::sharp_edges(std::as_const(g_), angle);
+      for (const E e : edges(g_))
+        if (get(sharp, e)) feature_[ei(e)] = 1;
+    }
+    if (o_.edge_is_constrained)
+      for (const E e : edges(g_))
+        if (o_.edge_is_constrained(ei(e))) feature_[ei(e)] = 1;
+    for (const E e : edges(g_)) {
+      const H h = halfedge(e, g_);
+      if (border(h) || border(opposite(h, g_))) feature_[ei(e)] = 0;
+    }
+    for (const V v : vertices(g_)) classify(v);
+  }
+
+  // A vertex with two feature edges, not on the border, moves along them; one
+  // with one (a line's end), three or more (a corner), or any at the border
+  // never moves. Locks are never lifted.
+  void classify(V v) {
+    const H start = halfedge(v, g_);
+    if (start == boost::graph_traits<G>::null_halfedge()) return;
+    int n = 0;
+    bool on_border = false;
+    H x = start;
+    do {
+      if (feature_[ei(edge(x, g_))]) ++n;
+      if (border(x) || border(opposite(x, g_))) on_border = true;
+      x = opposite(next(x, g_), g_);
+    } while (x != start);
+    const std::size_t i = vi(v);
+    if (n > 0 && (n != 2 || on_border)) locked_[i] = 1;
+    on_line_[i] = n == 2 && !locked_[i];
+  }
+
   Priority priority(H h, double cost) const {
     std::uint64_t a = vi(source(h, g_)), b = vi(target(h, g_));
     if (a > b) std::swap(a, b);
     return {cost, (a << 32) | b};
   }
 
+  // Where a collapse may put its vertex (see evaluate).
+  enum class Where { anywhere, at_a, at_b, on_segment, nowhere };
+
+  // The constraints' say on the collapse of edge k with ends a < b: locked
+  // ends stay; a vertex on a feature line moves only along it (it survives
+  // a collapse across, staying put; a collapse along its line keeps the new
+  // point on the old segment); two pinned ends across a line: refused.
+  Where where(std::size_t k, std::size_t a, std::size_t b) const {
+    if (locked_[a] && locked_[b]) return Where::nowhere;
+    if (!features_) return locked_[a] ? Where::at_a : locked_[b] ? Where::at_b : Where::anywhere;
+    if (feature_[k]) return locked_[a] ? Where::at_a : locked_[b] ? Where::at_b : Where::on_segment;
+    const bool pa = locked_[a] || on_line_[a], pb = locked_[b] || on_line_[b];
+    if (pa && pb) return Where::nowhere;
+    return pa ? Where::at_a : pb ? Where::at_b : Where::anywhere;
+  }
+
   // The placement of collapsing h's edge; false when it may not collapse at
-  // all (both ends locked). Independent of h's direction: the ends are taken
-  // in index order.
-  bool evaluate(H h, Placement& pl) const {
+  // all (see where(); a memoryless policy may refuse too). Independent of
+  // h's direction: the ends are taken in index order.
+  bool evaluate(H h, Placement& pl) {
     std::size_t a = vi(source(h, g_)), b = vi(target(h, g_));
     if (a > b) std::swap(a, b);
-    if (locked_[a] && locked_[b]) return false;
-    const Data s = simplification::merge(policy_, data_[a], data_[b]);
-    if (locked_[a]) pl = simplification::fixed(policy_, s, pos_[a], pos_[b], pos_[a]);
-    else if (locked_[b]) pl = simplification::fixed(policy_, s, pos_[a], pos_[b], pos_[b]);
-    else pl = policy_.place(s, pos_[a], pos_[b]);
-    return true;
+    const Where w = where(ei(edge(h, g_)), a, b);
+    if (w == Where::nowhere) return false;
+    if constexpr (memoryless) {
+      const Collapse_profile p = profile(h, a, b);
+      auto at = [&](const Eigen::Vector3d& x) { return policy_.fixed(p, x); };
+      pl = w == Where::at_a ? at(pos_[a]) : w == Where::at_b ? at(pos_[b])
+           : w == Where::on_segment ? best_of_three(at, a, b) : policy_.place(p);
+      return std::isfinite(pl.cost); // an infinite cost: the policy refuses for now
+    } else {
+      const Data s = simplification::merge(policy_, data_[a], data_[b]);
+      auto at = [&](const Eigen::Vector3d& x) { return simplification::fixed(policy_, s, pos_[a], pos_[b], x); };
+      pl = w == Where::at_a ? at(pos_[a]) : w == Where::at_b ? at(pos_[b])
+           : w == Where::on_segment ? best_of_three(at, a, b) : policy_.place(s, pos_[a], pos_[b]);
+      return true;
+    }
+  }
+
+  // The cheapest of a, b and their midpoint (ties in that order).
+  template <class At>
+  Placement best_of_three(const At& at, std::size_t a, std::size_t b) const {
+    Placement r = at(pos_[a]);
+    const Placement pb = at(pos_[b]);
+    if (pb.cost < r.cost) r = pb;
+    const Placement pm = at(0.5 * (pos_[a] + pos_[b]));
+    if (pm.cost < r.cost) r = pm;
+    return r;
+  }
+
+  // The profile of h's edge, ends a < b (vertex indices), in the canonical
+  // order of Collapse_profile. Valid until the next call.
+  Collapse_profile profile(H h, std::size_t a, std::size_t b) {
+    tri_keys_.clear();
+    border_keys_.clear();
+    link_keys_.clear();
+    for (const V v : {source(h, g_), target(h, g_)}) {
+      const std::uint32_t iv = static_cast<std::uint32_t>(vi(v));
+      const H start = halfedge(v, g_);
+      H x = start;
+      do {
+        // x: u → v.
+        const V u = source(x, g_);
+        const auto iu = static_cast<std::uint32_t>(vi(u));
+        if (iu != a && iu != b) link_keys_.push_back(iu);
+        const H ox = opposite(x, g_);
+        if (!border(x)) {
+          // The face (v, w, u), rotated to start at its lowest index.
+          std::array<std::uint32_t, 3> t{iv, static_cast<std::uint32_t>(vi(target(next(x, g_), g_))), iu};
+          std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+          tri_keys_.push_back(t);
+          if (border(ox) && o_.border != Border_mode::free) border_keys_.push_back({iu, iv});
+        } else if (o_.border != Border_mode::free) {
+          border_keys_.push_back({iv, iu});
+        }
+        x = opposite(next(x, g_), g_);
+      } while (x != start);
+    }
+    auto sort_unique = [](auto& keys) {
+      std::sort(keys.begin(), keys.end());
+      keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    };
+    sort_unique(tri_keys_);
+    sort_unique(border_keys_);
+    sort_unique(link_keys_);
+    tris_.resize(tri_keys_.size());
+    for (std::size_t i = 0; i < tri_keys_.size(); ++i)
+      tris_[i] = {pos_[tri_keys_[i][0]], pos_[tri_keys_[i][1]], pos_[tri_keys_[i][2]]};
+    borders_.resize(border_keys_.size());
+    for (std::size_t i = 0; i < border_keys_.size(); ++i)
+      borders_[i] = {pos_[border_keys_[i][0]], pos_[border_keys_[i][1]]};
+    link_.resize(link_keys_.size());
+    for (std::size_t i = 0; i < link_keys_.size(); ++i) link_[i] = pos_[link_keys_[i]];
+    return {pos_[a], pos_[b], tris_, borders_, link_};
   }
 
   // The vertex that survives the collapse of h's edge to x: a locked end,
@@ -319,6 +461,7 @@ class Collapser {
   bool target_survives(H h, const Eigen::Vector3d& x) const {
     const std::size_t p = vi(source(h, g_)), q = vi(target(h, g_));
     if (locked_[p] != locked_[q]) return locked_[q] != 0;
+    if (on_line_[p] != on_line_[q]) return on_line_[q] != 0;
     const double dp = (pos_[p] - x).squaredNorm(), dq = (pos_[q] - x).squaredNorm();
     if (dp != dq) return dq < dp;
     return q < p;
@@ -355,6 +498,10 @@ class Collapser {
   // Requeues the edge of h (any of its two halfedges) with a fresh cost.
   void requeue(E e) {
     const std::size_t k = ei(e);
+    if constexpr (memoryless) {
+      if (stamp_[k] == epoch_) return; // already requeued after this collapse
+      stamp_[k] = epoch_;
+    }
     refused_[k] = 0;
     const H h = halfedge(e, g_);
     Placement pl;
@@ -389,11 +536,45 @@ class Collapser {
       queue_.erase(ei(edge(prev(oh, g_), g_)));
     }
     const std::size_t ip = vi(p), iq = vi(q);
+    // The two edges (p, apex), (q, apex) of each face of e become one: a
+    // feature if either was.
+    V apex[2];
+    std::uint8_t merged[2] = {0, 0};
+    int apexes = 0;
+    if (features_) {
+      if (top) {
+        apex[apexes] = target(next(h, g_), g_);
+        merged[apexes++] = feature_[ei(edge(next(h, g_), g_))] | feature_[ei(edge(prev(h, g_), g_))];
+      }
+      if (bottom) {
+        apex[apexes] = target(next(oh, g_), g_);
+        merged[apexes++] = feature_[ei(edge(next(oh, g_), g_))] | feature_[ei(edge(prev(oh, g_), g_))];
+      }
+    }
     if (o_.visitor.on_collapse) o_.visitor.on_collapse(ip, iq, pl.position, pl.cost);
     if (!genmesh::collapse_edge(e, g_)) return false; // can_collapse_edge said yes: never happens
-    data_[iq] = simplification::merge(policy_, data_[ip], data_[iq]);
+
+    if constexpr (!memoryless) data_[iq] = simplification::merge(policy_, data_[ip], data_[iq]);
     pos_[iq] = pl.position;
     faces_ -= static_cast<std::size_t>(top) + static_cast<std::size_t>(bottom);
+    if constexpr (memoryless) ++epoch_;
+    if (apexes > 0) merge_features(q, apex, merged, apexes);
+    if constexpr (memoryless) {
+      // The profile of every edge at a neighbour of q holds a face at q.
+      const H start = halfedge(q, g_);
+      H x = start;
+      do {
+        const V n = source(x, g_);
+        const H s2 = halfedge(n, g_);
+        H y = s2;
+        do {
+          requeue(edge(y, g_));
+          y = opposite(next(y, g_), g_);
+        } while (y != s2);
+        x = opposite(next(x, g_), g_);
+      } while (x != start);
+      return true;
+    }
     // Every edge of the survivor changes cost; the refused edges of its
     // neighbours may pass their fold-over test now.
     const H start = halfedge(q, g_);
@@ -417,6 +598,32 @@ class Collapser {
     return true;
   }
 
+  // After a collapse onto q: the merged edges (q, apex) take their flags;
+  // q and the apexes are classified again, and the edges of an apex whose
+  // class changed are requeued.
+  void merge_features(V q, const V* apex, const std::uint8_t* merged, int apexes) {
+    const H start = halfedge(q, g_);
+    H x = start;
+    do {
+      for (int i = 0; i < apexes; ++i)
+        if (source(x, g_) == apex[i]) feature_[ei(edge(x, g_))] = merged[i];
+      x = opposite(next(x, g_), g_);
+    } while (x != start);
+    classify(q);
+    for (int i = 0; i < apexes; ++i) {
+      const std::size_t k = vi(apex[i]);
+      const std::uint8_t before = static_cast<std::uint8_t>(locked_[k] * 2 + on_line_[k]);
+      classify(apex[i]);
+      if (before == locked_[k] * 2 + on_line_[k]) continue;
+      const H s2 = halfedge(apex[i], g_);
+      H y = s2;
+      do {
+        requeue(edge(y, g_));
+        y = opposite(next(y, g_), g_);
+      } while (y != s2);
+    }
+  }
+
   void write_points() {
     auto pm = get(vertex_point, g_);
     using P = point_t<G>;
@@ -433,8 +640,21 @@ class Collapser {
   std::vector<Eigen::Vector3d> pos_;
   std::vector<Data> data_;
   std::vector<std::uint8_t> locked_, hint_, refused_;
+  // Feature lines: per edge, is it one; per vertex, does it move along one.
+  bool features_ = false;
+  std::vector<std::uint8_t> feature_, on_line_;
   std::vector<E> edesc_;
   Mutable_priority_queue<Priority> queue_;
+  // Memoryless policies: the profile's scratch, and the collapse count at
+  // which each edge was last requeued.
+  std::vector<std::array<std::uint32_t, 3>> tri_keys_;
+  std::vector<std::array<std::uint32_t, 2>> border_keys_;
+  std::vector<std::uint32_t> link_keys_;
+  std::vector<Profile_triangle> tris_;
+  std::vector<Profile_border_edge> borders_;
+  std::vector<Eigen::Vector3d> link_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t epoch_ = 0;
 };
 
 } // namespace genmesh::detail::simplification
