@@ -746,12 +746,14 @@ genmesh::Simplification_result simplify_with(Mesh& mesh, const Args& a, bool pro
              : a.boundary == "free" ? genmesh::Border_mode::free
                                     : genmesh::Border_mode::preserve;
   o.feature_angle = a.features;
-  if (progress)
-    o.visitor.on_progress = [](std::size_t faces, std::size_t target) {
-      std::fprintf(stderr, "\rsimplify: %zu faces (target %zu)   ", faces, target);
-    };
-  const auto r = genmesh::simplify(mesh, o);
-  if (progress) std::fprintf(stderr, "\n");
+  if (!progress) return genmesh::simplify(mesh, o);
+  struct Progress : genmesh::Mutation_visitor {
+    void on_step(std::string_view, std::size_t done, std::size_t total) {
+      std::fprintf(stderr, "\rsimplify: %zu of %zu faces removed   ", done, total);
+    }
+  };
+  const auto r = genmesh::simplify(mesh, o, Progress{});
+  std::fprintf(stderr, "\n");
   return r;
 }
 

@@ -1,28 +1,39 @@
 // genmesh/simplification/detail/collapse.h — the collapse loop behind
 // genmesh::simplify (private; see <genmesh/simplification.h>).
 //
-// Per vertex: the policy's data (a quadric), a copy of the point in double,
-// a locked flag and a "has a refused edge" hint; per edge: the descriptor
-// and a refused flag. Collapse never adds elements, so these are vectors
-// sized once by the index bounds.
+// Per vertex: the policy's data (a quadric; nothing for a memoryless
+// policy), a copy of the point in double, locked / on-a-feature-line flags
+// and a "has a refused edge" hint; per edge: the descriptor, refused and
+// feature flags; per face (with the self-intersection guard): its box, a
+// stamp and an alive flag. Collapse never adds elements, so these are
+// vectors sized once by the index bounds.
 //
 // One collapse: pop the cheapest edge; recompute its placement (the same
-// numbers as when it was queued); refuse it if a face around it would turn by
-// more than the allowed angle, flip or degenerate, or if can_collapse_edge
-// says no (link condition); else drop the edges of its triangles from the
-// queue, collapse_edge, merge the policy data into the survivor, and requeue
-// every edge of the survivor, plus the refused edges of its neighbours (their
-// fold-over test depends on the survivor's point).
+// numbers as when it was queued; where locks and feature lines allow it);
+// refuse it if a face around it would turn by more than the allowed angle,
+// flip, degenerate or fall below .min_angle, if the survivor would exceed
+// .max_valence, if can_collapse_edge says no (link condition), or if a new
+// face would meet another face (exact test against the faces a spatial hash
+// finds near the new ones); else drop the edges of its triangles from the
+// queue, collapse_edge (the user's visitor rides along; the survivor's point
+// is written as it moves), merge the policy data into the survivor, and
+// requeue every edge of the survivor, plus the refused edges of its
+// neighbours (their fold-over test depends on the survivor's point) — for a
+// memoryless policy every edge at a neighbour of the survivor (their
+// profiles hold its faces).
 #pragma once
 
 #include <genmesh/concepts.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/features.h>
+#include <genmesh/geometry.h>
+#include <genmesh/simplification/detail/face_grid.h>
 #include <genmesh/local_operations.h>
 #include <genmesh/point_traits.h>
 #include <genmesh/priority_queue.h>
 #include <genmesh/property_maps.h>
 #include <genmesh/simplification/profile.h>
+#include <genmesh/visitor.h>
 
 #include <boost/graph/graph_traits.hpp>
 
@@ -97,7 +108,7 @@ struct Vertex_data_of<Policy> {
   using type = typename Policy::Vertex_data;
 };
 
-template <class G, class Policy>
+template <class G, class Policy, class Visitor>
 class Collapser {
   using V = vertex_descriptor_t<G>;
   using H = halfedge_descriptor_t<G>;
@@ -108,12 +119,13 @@ class Collapser {
   using Options = Simplification_options<Policy>;
 
  public:
-  Collapser(G& g, const Options& o)
-      : g_(g), o_(o), policy_(o.policy), vindex_(get(vertex_index, std::as_const(g))),
+  Collapser(G& g, const Options& o, Visitor& visitor)
+      : g_(g), o_(o), policy_(o.policy), vis_(visitor), vindex_(get(vertex_index, std::as_const(g))),
         eindex_(get(edge_index, std::as_const(g))) {}
 
   Simplification_result run() {
     Simplification_result r;
+    vis_.on_started(std::as_const(g_));
     prepare();
     const std::size_t faces0 = faces_;
     std::size_t target = 0;
@@ -127,8 +139,12 @@ class Collapser {
     const bool has_target = o_.target_faces || o_.target_ratio;
     double max_error = o_.max_error;
     if (o_.max_error_relative) max_error *= diagonal();
+    const std::size_t total = has_target && faces0 > target ? faces0 - target : faces0;
+    vis_.on_step("faces", 0, total);
     if (has_target && faces0 <= target) {
       r.stop_reason = Stop_reason::target_already_met;
+      vis_.on_step("faces", total, total);
+      vis_.on_finished(std::as_const(g_));
       finish(r);
       return r;
     }
@@ -151,11 +167,11 @@ class Collapser {
       if (collapse(ei)) {
         ++r.collapses;
         r.max_error = std::max(r.max_error, error);
-        if ((r.collapses & 16383u) == 0 && o_.visitor.on_progress) o_.visitor.on_progress(faces_, target);
+        if ((r.collapses & 16383u) == 0) vis_.on_step("faces", std::min(faces0 - faces_, total - 1), total);
       }
     }
-    if (o_.visitor.on_progress) o_.visitor.on_progress(faces_, target);
-    write_points();
+    vis_.on_step("faces", total, total);
+    vis_.on_finished(std::as_const(g_));
     finish(r);
     return r;
   }
@@ -163,6 +179,7 @@ class Collapser {
  private:
   std::size_t vi(V v) const { return static_cast<std::size_t>(get(vindex_, v)); }
   std::size_t ei(E e) const { return static_cast<std::size_t>(get(eindex_, e)); }
+  std::size_t fi(F f) const { return static_cast<std::size_t>(get(get(face_index, g_), f)); }
   bool border(H h) const { return face(h, g_) == boost::graph_traits<G>::null_face(); }
 
   template <class Range>
@@ -304,8 +321,19 @@ class Collapser {
     }
     on_line_.assign(vb, 0);
     init_features(eb);
+    if (o_.prevent_self_intersections) {
+      const std::size_t fb = index_bound(face_index, g_);
+      fdesc_.assign(fb, F{});
+      slot_.assign(fb, Face_slot{});
+      for (const F f : faces(g_)) {
+        fdesc_[fi(f)] = f;
+        slot_[fi(f)].alive = 1;
+      }
+      build_grid();
+    }
     const double deg = std::clamp(o_.max_normal_deviation, 0.0, 180.0);
     cos_max_ = std::max(0.0, std::cos(deg * std::numbers::pi / 180.0));
+    cos_min_angle_ = o_.min_angle > 0 ? std::cos(std::min(o_.min_angle, 60.0) * std::numbers::pi / 180.0) : 1.0;
     queue_ = Mutable_priority_queue<Priority>(eb);
     queue_.reserve(eb);
     Placement pl;
@@ -488,11 +516,152 @@ class Collapser {
             const double d = n0.dot(n1);
             if (!(d > 0) || d * d < cos_max_ * cos_max_ * l0 * l1) return false;
           }
+          if (cos_min_angle_ < 1) {
+            // No corner below .min_angle, unless the face was as bad before.
+            const double c1 = largest_corner_cosine(x, pos_[ia], pos_[ib]);
+            if (c1 > cos_min_angle_ && c1 > largest_corner_cosine(pos_[iv], pos_[ia], pos_[ib])) return false;
+          }
         }
       }
       h = opposite(next(h, g_), g_);
     } while (h != start);
     return true;
+  }
+
+  // ---- the self-intersection guard ----------------------------------------
+
+  // The corners of live face f: vertex indices and points.
+  Mesh_triangle<std::uint32_t> triangle(std::size_t f) const {
+    const H h0 = halfedge(fdesc_[f], g_);
+    Mesh_triangle<std::uint32_t> t;
+    H h = h0;
+    for (int i = 0; i < 3; ++i, h = next(h, g_)) {
+      t.id[i] = static_cast<std::uint32_t>(vi(target(h, g_)));
+      t.p[i] = pos_[t.id[i]];
+    }
+    return t;
+  }
+
+  // Every live face in the grid, with cells about twice the mean edge length.
+  void build_grid() {
+    double sum = 0;
+    std::size_t n = 0;
+    for (const E e : edges(g_)) {
+      const H h = halfedge(e, g_);
+      sum += (pos_[vi(target(h, g_))] - pos_[vi(source(h, g_))]).norm();
+      ++n;
+    }
+    grid_.reset(n > 0 && sum > 0 ? 2.0 * sum / static_cast<double>(n) : 1.0, faces_);
+    for (std::size_t f = 0; f < slot_.size(); ++f)
+      if (slot_[f].alive) {
+        const auto t = triangle(f);
+        const Box b = Box::of(t.p[0], t.p[1], t.p[2]);
+        slot_[f].set_box(b);
+        grid_.insert(static_cast<std::uint32_t>(f), b);
+      }
+    grid_faces_ = faces_;
+  }
+
+  // After a collapse onto q: q's faces go into the grid with their new
+  // boxes; when the faces have halved since the last build, rebuild with
+  // cells fitting the grown faces.
+  void update_grid(V q) {
+    if (2 * faces_ < grid_faces_) {
+      build_grid();
+      return;
+    }
+    const H start = halfedge(q, g_);
+    H x = start;
+    do {
+      if (!border(x)) {
+        const std::size_t f = fi(face(x, g_));
+        const auto t = triangle(f);
+        const Box b = Box::of(t.p[0], t.p[1], t.p[2]);
+        slot_[f].set_box(b);
+        grid_.insert(static_cast<std::uint32_t>(f), b);
+      }
+      x = opposite(next(x, g_), g_);
+    } while (x != start);
+  }
+
+  // Would the faces the collapse of edge(h) into target(h) at x makes meet
+  // any other face, or each other, beyond what they share? (Exact.)
+  bool stays_embedded(H h, const Eigen::Vector3d& x) {
+    const std::uint32_t ip = static_cast<std::uint32_t>(vi(source(h, g_))),
+                        iq = static_cast<std::uint32_t>(vi(target(h, g_)));
+    // The faces around p and q (they change or vanish), stamped; the new ones.
+    if (stamp_ring_ > 0xF0000000u) { // before the stamps wrap
+      for (auto& x : slot_) x.seen = 0;
+      stamp_ring_ = 0;
+    }
+    const std::uint32_t ring = ++stamp_ring_;
+    fresh_.clear();
+    for (const V v : {source(h, g_), target(h, g_)}) {
+      const H start = halfedge(v, g_);
+      H y = start;
+      do {
+        if (!border(y)) {
+          const std::size_t f = fi(face(y, g_));
+          if (slot_[f].seen != ring) {
+            slot_[f].seen = ring;
+            auto t = triangle(f);
+            int ends = 0;
+            for (int i = 0; i < 3; ++i)
+              if (t.id[i] == ip || t.id[i] == iq) {
+                ++ends;
+                t.id[i] = iq;
+                t.p[i] = x;
+              }
+            if (ends == 1) fresh_.push_back(t);
+          }
+        }
+        y = opposite(next(y, g_), g_);
+      } while (y != start);
+    }
+    if (fresh_.empty()) return true;
+    for (std::size_t i = 0; i < fresh_.size(); ++i)
+      for (std::size_t j = i + 1; j < fresh_.size(); ++j)
+        if (faces_intersect(fresh_[i], fresh_[j])) return false;
+    // Against the live faces near the new ones (one query for the union of
+    // their boxes; a candidate is tested exactly against each new face whose
+    // box its box meets). slot_.seen also marks the candidates seen (a stamp
+    // above the ring's: ring faces are skipped before they are stamped).
+    fresh_box_.resize(fresh_.size());
+    Box all = Box::of(fresh_[0].p[0], fresh_[0].p[1], fresh_[0].p[2]);
+    for (std::size_t i = 0; i < fresh_.size(); ++i) {
+      fresh_box_[i] = Box::of(fresh_[i].p[0], fresh_[i].p[1], fresh_[i].p[2]);
+      all.lo = all.lo.cwiseMin(fresh_box_[i].lo);
+      all.hi = all.hi.cwiseMax(fresh_box_[i].hi);
+    }
+    const std::uint32_t query = ++stamp_ring_;
+    bool hit = false;
+    grid_.query(all, [&](std::uint32_t f) {
+      Face_slot& sl = slot_[f];
+      if (hit || !sl.alive || sl.seen == ring || sl.seen == query) return;
+      sl.seen = query;
+      if (!sl.overlaps(all)) return;
+      bool built = false;
+      Mesh_triangle<std::uint32_t> u;
+      for (std::size_t i = 0; i < fresh_.size() && !hit; ++i) {
+        if (!sl.overlaps(fresh_box_[i])) continue;
+        if (!built) {
+          u = triangle(f);
+          built = true;
+        }
+        if (faces_intersect(fresh_[i], u)) hit = true;
+      }
+    });
+    if (hit) return false;
+    return true;
+  }
+
+  // The cosine of the triangle's smallest angle.
+  static double largest_corner_cosine(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+    auto cosine = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+      const double l = std::sqrt(u.squaredNorm() * v.squaredNorm());
+      return l > 0 ? u.dot(v) / l : 1.0;
+    };
+    return std::max({cosine(b - a, c - a), cosine(c - b, a - b), cosine(a - c, b - c)});
   }
 
   // Requeues the edge of h (any of its two halfedges) with a fresh cost.
@@ -521,7 +690,9 @@ class Collapser {
     const H oh = opposite(h, g_);
     const V p = source(h, g_), q = target(h, g_);
     if (!fan_keeps_normals(p, q, pl.position) || !fan_keeps_normals(q, p, pl.position) ||
-        !genmesh::can_collapse_edge(e, std::as_const(g_))) {
+        (o_.max_valence > 0 && valence_after(h) > o_.max_valence) ||
+        !genmesh::can_collapse_edge(e, std::as_const(g_)) ||
+        (o_.prevent_self_intersections && !stays_embedded(h, pl.position))) {
       refused_[k] = 1;
       hint_[vi(p)] = hint_[vi(q)] = 1;
       return false;
@@ -551,14 +722,20 @@ class Collapser {
         merged[apexes++] = feature_[ei(edge(next(oh, g_), g_))] | feature_[ei(edge(prev(oh, g_), g_))];
       }
     }
-    if (o_.visitor.on_collapse) o_.visitor.on_collapse(ip, iq, pl.position, pl.cost);
-    if (!genmesh::collapse_edge(e, g_)) return false; // can_collapse_edge said yes: never happens
+    if (o_.prevent_self_intersections) {
+      if (top) slot_[fi(face(h, g_))].alive = 0;
+      if (bottom) slot_[fi(face(oh, g_))].alive = 0;
+    }
+    vis_.on_collapse_placement(h, std::as_const(pl.position), pl.cost, std::as_const(g_));
+    Point_writer writer{{}, this, pl.position};
+    if (!genmesh::collapse_edge(e, g_, writer)) return false; // can_collapse_edge said yes: never happens
 
     if constexpr (!memoryless) data_[iq] = simplification::merge(policy_, data_[ip], data_[iq]);
     pos_[iq] = pl.position;
     faces_ -= static_cast<std::size_t>(top) + static_cast<std::size_t>(bottom);
     if constexpr (memoryless) ++epoch_;
     if (apexes > 0) merge_features(q, apex, merged, apexes);
+    if (o_.prevent_self_intersections) update_grid(q);
     if constexpr (memoryless) {
       // The profile of every edge at a neighbour of q holds a face at q.
       const H start = halfedge(q, g_);
@@ -624,24 +801,78 @@ class Collapser {
     }
   }
 
-  void write_points() {
-    auto pm = get(vertex_point, g_);
-    using P = point_t<G>;
-    for (const V v : vertices(g_)) put(pm, v, from_eigen<P>(pos_[vi(v)]));
+  // Forwards collapse_edge's hooks to the user's visitor, writing the
+  // survivor's new point first (so that the mesh's points are current in
+  // every hook: before_collapse sees the old ones, on_collapse the new).
+  struct Point_writer : Mutation_visitor {
+    Collapser* c;
+    const Eigen::Vector3d& position;
+    void before_collapse(const H& h, const G& g) { c->vis_.before_collapse(h, g); }
+    void on_collapse(const V& v, const G& g) {
+      put(get(vertex_point, c->g_), v, from_eigen<point_t<G>>(position));
+      c->vis_.on_collapse(v, g);
+    }
+  };
+
+  // The valence of the survivor of collapsing edge(h): both ends' neighbours
+  // but the ends, the apexes counted once.
+  std::size_t valence_after(H h) const {
+    auto degree_of = [&](V v) {
+      std::size_t n = 0;
+      const H start = halfedge(v, g_);
+      H x = start;
+      do {
+        ++n;
+        x = opposite(next(x, g_), g_);
+      } while (x != start);
+      return n;
+    };
+    const std::size_t faces = static_cast<std::size_t>(!border(h)) + static_cast<std::size_t>(!border(opposite(h, g_)));
+    return degree_of(source(h, g_)) + degree_of(target(h, g_)) - 2 - faces;
   }
+
 
   G& g_;
   const Options& o_;
   Policy policy_;
+  Visitor& vis_;
   decltype(get(vertex_index, std::declval<const G&>())) vindex_;
   decltype(get(edge_index, std::declval<const G&>())) eindex_;
   std::size_t faces_ = 0;
   double cos_max_ = 0.5;
+  double cos_min_angle_ = 1.0; // cos(.min_angle); 1: no limit
   std::vector<Eigen::Vector3d> pos_;
   std::vector<Data> data_;
   std::vector<std::uint8_t> locked_, hint_, refused_;
   // Feature lines: per edge, is it one; per vertex, does it move along one.
   bool features_ = false;
+  // The self-intersection guard: faces by index, alive or not, stamps, grid.
+  std::vector<F> fdesc_;
+  // Per face: its box (float, rounded outwards: half the memory traffic of
+  // the query loop), the stamp of the last test that saw it, alive or not.
+  struct Face_slot {
+    float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    std::uint32_t seen = 0, alive = 0;
+    void set_box(const Box& b) {
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = static_cast<float>(b.lo[i]);
+        if (static_cast<double>(lo[i]) > b.lo[i]) lo[i] = std::nextafter(lo[i], -std::numeric_limits<float>::infinity());
+        hi[i] = static_cast<float>(b.hi[i]);
+        if (static_cast<double>(hi[i]) < b.hi[i]) hi[i] = std::nextafter(hi[i], std::numeric_limits<float>::infinity());
+      }
+    }
+    bool overlaps(const Box& b) const {
+      for (int i = 0; i < 3; ++i)
+        if (static_cast<double>(lo[i]) > b.hi[i] || b.lo[i] > static_cast<double>(hi[i])) return false;
+      return true;
+    }
+  };
+  std::vector<Face_slot> slot_;
+  std::uint32_t stamp_ring_ = 0;
+  std::vector<Mesh_triangle<std::uint32_t>> fresh_;
+  std::vector<Box> fresh_box_;
+  Face_grid grid_;
+  std::size_t grid_faces_ = 0;
   std::vector<std::uint8_t> feature_, on_line_;
   std::vector<E> edesc_;
   Mutable_priority_queue<Priority> queue_;
