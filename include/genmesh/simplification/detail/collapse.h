@@ -280,14 +280,8 @@ class Collapser {
       for (const V v : vertices(g_))
         if (o_.is_locked(vi(v))) locked_[vi(v)] = 1;
     if constexpr (requires { policy_.mean_edge_length; }) {
-      double sum = 0;
-      std::size_t n = 0;
-      for (const E e : edges(g_)) {
-        const H h = halfedge(e, g_);
-        sum += (pos_[vi(target(h, g_))] - pos_[vi(source(h, g_))]).norm();
-        ++n;
-      }
-      if (n > 0 && sum > 0) policy_.mean_edge_length = sum / static_cast<double>(n);
+      const double m = mean_edge_length();
+      if (m > 0) policy_.mean_edge_length = m;
     }
     // Faces in index order, corners from the lowest index: the same sums on
     // every backend.
@@ -542,8 +536,8 @@ class Collapser {
     return t;
   }
 
-  // Every live face in the grid, with cells about twice the mean edge length.
-  void build_grid() {
+  // The mean length of the live edges (0 without any).
+  double mean_edge_length() const {
     double sum = 0;
     std::size_t n = 0;
     for (const E e : edges(g_)) {
@@ -551,7 +545,13 @@ class Collapser {
       sum += (pos_[vi(target(h, g_))] - pos_[vi(source(h, g_))]).norm();
       ++n;
     }
-    grid_.reset(n > 0 && sum > 0 ? 2.0 * sum / static_cast<double>(n) : 1.0, faces_);
+    return n > 0 ? sum / static_cast<double>(n) : 0.0;
+  }
+
+  // Every live face in the grid, with cells about twice the mean edge length.
+  void build_grid() {
+    const double m = mean_edge_length();
+    grid_.reset(m > 0 ? 2.0 * m : 1.0, faces_);
     for (std::size_t f = 0; f < slot_.size(); ++f)
       if (slot_[f].alive) {
         const auto t = triangle(f);
@@ -817,18 +817,8 @@ class Collapser {
   // The valence of the survivor of collapsing edge(h): both ends' neighbours
   // but the ends, the apexes counted once.
   std::size_t valence_after(H h) const {
-    auto degree_of = [&](V v) {
-      std::size_t n = 0;
-      const H start = halfedge(v, g_);
-      H x = start;
-      do {
-        ++n;
-        x = opposite(next(x, g_), g_);
-      } while (x != start);
-      return n;
-    };
     const std::size_t faces = static_cast<std::size_t>(!border(h)) + static_cast<std::size_t>(!border(opposite(h, g_)));
-    return degree_of(source(h, g_)) + degree_of(target(h, g_)) - 2 - faces;
+    return static_cast<std::size_t>(degree(source(h, g_), g_) + degree(target(h, g_), g_)) - 2 - faces;
   }
 
 
