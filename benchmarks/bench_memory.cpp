@@ -15,6 +15,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -50,6 +51,31 @@ void operator delete(void* p) noexcept {
   std::free(base);
 }
 void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
+// Over-aligned blocks (genmesh's Large_allocator asks for 2 MiB alignment):
+// the size sits in the `alignment` bytes before the block.
+void* operator new(std::size_t n, std::align_val_t al) {
+  const std::size_t a = std::max(static_cast<std::size_t>(al), std::size_t{16});
+  void* p = std::aligned_alloc(a, (n + a + a - 1) / a * a);
+  if (!p) throw std::bad_alloc();
+  *static_cast<std::size_t*>(p) = n;
+  const long long now = live_bytes.fetch_add(static_cast<long long>(n), std::memory_order_relaxed) +
+                        static_cast<long long>(n);
+  long long peak = peak_bytes.load(std::memory_order_relaxed);
+  while (now > peak && !peak_bytes.compare_exchange_weak(peak, now, std::memory_order_relaxed)) {
+  }
+  return static_cast<char*>(p) + a;
+}
+void operator delete(void* p, std::align_val_t al) noexcept {
+  if (!p) return;
+  const std::size_t a = std::max(static_cast<std::size_t>(al), std::size_t{16});
+  void* base = static_cast<char*>(p) - a;
+  live_bytes.fetch_sub(static_cast<long long>(*static_cast<std::size_t*>(base)), std::memory_order_relaxed);
+  std::free(base);
+}
+void operator delete(void* p, std::size_t, std::align_val_t al) noexcept { operator delete(p, al); }
+void* operator new[](std::size_t n, std::align_val_t al) { return operator new(n, al); }
+void operator delete[](void* p, std::align_val_t al) noexcept { operator delete(p, al); }
+void operator delete[](void* p, std::size_t, std::align_val_t al) noexcept { operator delete(p, al); }
 void* operator new[](std::size_t n) { return operator new(n); }
 void operator delete[](void* p) noexcept { operator delete(p); }
 void operator delete[](void* p, std::size_t) noexcept { operator delete(p); }

@@ -165,8 +165,9 @@ void run_case(benchmark::State& state, Input in, Make make, Run run, Result resu
   state.counters["peak_MB"] = static_cast<double>(peak) / 1e6;
 }
 
-template <class G>
-void genmesh_row(benchmark::State& state, Input in, double ratio) {
+// genmesh's simplify with `Policy` on mesh type G; `guard`: .prevent_self_intersections.
+template <class G, class Policy = genmesh::Plane_quadrics>
+void genmesh_row(benchmark::State& state, Input in, double ratio, bool guard = true) {
   run_case(
       state, in,
       [&] {
@@ -174,7 +175,10 @@ void genmesh_row(benchmark::State& state, Input in, double ratio) {
         genmesh::build_mesh(soup(in), g, {.check = false});
         return g;
       },
-      [&](G& g) { genmesh::simplify(g, {.target_faces = target_faces(in, ratio)}); },
+      [&](G& g) {
+        genmesh::simplify(g, genmesh::Simplification_options<Policy>{.target_faces = target_faces(in, ratio),
+                                                                      .prevent_self_intersections = guard});
+      },
       [](const G& g) { return std::pair{genmesh::to_soup(g), genmesh::check_mesh(g).ok()}; });
 }
 
@@ -302,6 +306,10 @@ void register_all() {
     reg("genmesh_Halfedge_mesh", [=](benchmark::State& s) { genmesh_row<Halfedge_mesh>(s, in, r); });
     reg("genmesh_Surface_mesh", [=](benchmark::State& s) { genmesh_row<Surface_mesh>(s, in, r); });
     reg("genmesh_Incidence_mesh", [=](benchmark::State& s) { genmesh_row<Incidence_mesh>(s, in, r); });
+    reg("genmesh_Halfedge_mesh_no_guard",
+        [=](benchmark::State& s) { genmesh_row<Halfedge_mesh>(s, in, r, false); });
+    reg("genmesh_Halfedge_mesh_Lindstrom_Turk",
+        [=](benchmark::State& s) { genmesh_row<Halfedge_mesh, genmesh::Lindstrom_turk>(s, in, r); });
     reg("CGAL_GH_plane", [=](benchmark::State& s) {
       cgal_row<SMS::GarlandHeckbert_plane_policies<Surface_mesh, Kernel>>(s, in, r);
     });

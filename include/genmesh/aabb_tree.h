@@ -4,9 +4,15 @@
 // Aabb_tree<G> copies the mesh's triangles (polygons are split into the fan
 // from their lowest-index corner, as geometry.h's face_normal does) into
 // leaf order, in double precision, and builds a binary tree of axis-aligned
-// boxes over them with the surface area heuristic (binned, 16 bins; Wald,
-// "On fast construction of SAH-based bounding volume hierarchies", 2007).
+// boxes over them in Morton order of the triangles' box centres (a linear
+// BVH: Lauterbach et al. 2009, split at the highest differing bit as in
+// Karras 2012; leaves of at most 4 triangles, depth at most 63 + 32).
+// Chosen over a binned surface-area-heuristic build by measurement: 2.5x
+// faster to build (0.27 s against 0.50 s for 832k triangles), queries ~10%
+// slower, self-intersection scans faster overall (docs/benchmarks.md).
 // Boxes are stored in float, rounded outward, so they stay conservative.
+// Large arrays use transparent huge pages where the system offers them
+// (detail/large_allocator.h): first-touch page faults were half the build.
 // The tree is a snapshot: it does not follow later edits of the mesh.
 //
 // Guarantees: closest_point returns a point of the nearest triangle, the
@@ -26,16 +32,19 @@
 #include <genmesh/exceptions.h>
 #include <genmesh/geometry.h>
 #include <genmesh/property_maps.h>
+#include <genmesh/detail/large_allocator.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace genmesh {
@@ -309,9 +318,78 @@ public:
     visit_box(box, [&](std::uint32_t i) { return fn(static_cast<std::size_t>(i)); });
   }
 
+  /// Calls fn(i, j) once for every unordered pair of distinct triangles
+  /// (leaf-order indices, i < j) whose bounding boxes meet; stops when fn
+  /// returns false. A simultaneous descent of the tree against itself, which
+  /// visits each pair of overlapping nodes once instead of querying every
+  /// triangle from the root.
+  template <class Fn>
+  void for_each_overlapping_pair(Fn&& fn) const {
+    if (nodes_.empty()) return;
+    struct Pair {
+      std::uint32_t a, b;  // a == b: the pairs within one subtree
+    };
+    std::vector<Pair> stack;
+    stack.reserve(4 * max_depth);
+    stack.push_back({0, 0});
+    auto tri_boxes_meet = [&](std::uint32_t i, std::uint32_t j) {
+      const Tri& s = tris_[i];
+      const Tri& t = tris_[j];
+      for (int k = 0; k < 3; ++k) {
+        const double slo = std::min({s.p[0][k], s.p[1][k], s.p[2][k]});
+        const double shi = std::max({s.p[0][k], s.p[1][k], s.p[2][k]});
+        const double tlo = std::min({t.p[0][k], t.p[1][k], t.p[2][k]});
+        const double thi = std::max({t.p[0][k], t.p[1][k], t.p[2][k]});
+        if (shi < tlo || thi < slo) return false;
+      }
+      return true;
+    };
+    while (!stack.empty()) {
+      const Pair p = stack.back();
+      stack.pop_back();
+      const Node& na = nodes_[p.a];
+      if (p.a == p.b) {
+        if (na.count) {
+          for (std::uint32_t i = na.first; i < na.first + na.count; ++i)
+            for (std::uint32_t j = i + 1; j < na.first + na.count; ++j)
+              if (tri_boxes_meet(i, j) && !fn(std::size_t{i}, std::size_t{j})) return;
+        } else {
+          stack.push_back({na.first, na.first + 1});
+          stack.push_back({na.first + 1, na.first + 1});
+          stack.push_back({na.first, na.first});
+        }
+        continue;
+      }
+      const Node& nb = nodes_[p.b];
+      bool meet = true;
+      for (int k = 0; k < 3 && meet; ++k) meet = !(na.hi[k] < nb.lo[k] || nb.hi[k] < na.lo[k]);
+      if (!meet) continue;
+      if (na.count && nb.count) {
+        for (std::uint32_t i = na.first; i < na.first + na.count; ++i)
+          for (std::uint32_t j = nb.first; j < nb.first + nb.count; ++j)
+            if (tri_boxes_meet(i, j) && !fn(std::size_t{std::min(i, j)}, std::size_t{std::max(i, j)})) return;
+        continue;
+      }
+      // Descend the inner node with the larger box (both, in turn, when
+      // neither is a leaf).
+      auto half_area = [](const Node& n) {
+        const float x = n.hi[0] - n.lo[0], y = n.hi[1] - n.lo[1], z = n.hi[2] - n.lo[2];
+        return x * y + y * z + z * x;
+      };
+      if (nb.count || (!na.count && half_area(na) >= half_area(nb))) {
+        stack.push_back({na.first + 1, p.b});
+        stack.push_back({na.first, p.b});
+      } else {
+        stack.push_back({p.a, nb.first + 1});
+        stack.push_back({p.a, nb.first});
+      }
+    }
+  }
+
 private:
   static constexpr std::uint32_t npos = std::numeric_limits<std::uint32_t>::max();
-  // Deeper than this, nodes split at the median (bounds the traversal stacks).
+  // No tree is deeper: 63 Morton bits, then at most 32 median splits of
+  // equal codes (bounds the traversal stacks).
   static constexpr std::uint32_t max_depth = 100;
 
   struct Tri {
@@ -421,10 +499,35 @@ private:
     return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
   }
 
+  // One triangle's float box and centroid, for the build only.
+  struct Build_prim {
+    float lo[3], hi[3], c[3];
+    std::uint32_t index;
+  };
+  // A float box, grown by extend().
+  struct Fbox {
+    float lo[3] = {inf_f, inf_f, inf_f}, hi[3] = {-inf_f, -inf_f, -inf_f};
+    void extend(const float* l, const float* h) {
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], l[k]), hi[k] = std::max(hi[k], h[k]);
+    }
+  };
+  static constexpr float inf_f = std::numeric_limits<float>::infinity();
+
+  // Pass 1 gathers the fan triangles' faces, corners and float boxes in
+  // face order; the prims are sorted into Morton order and the tree is cut
+  // from the sorted codes, boxes bottom-up; pass 2 fills tris_ and info_ in
+  // leaf order. Peak: the triangles (88 B each for 32-bit indices) plus
+  // ~100 B per triangle during the build.
   template <class PointMap>
   void build(const G& g, PointMap pm) {
-    std::vector<Tri> tris;
-    std::vector<Info> info;
+    std::size_t count = 0;
+    for (const auto f : faces(g)) count += degree(f, g) - 2;
+    // Pass 1, in face order: each fan triangle's face and corners, and its
+    // float box and centroid.
+    detail::large_vector<Info> info;
+    detail::large_vector<Build_prim> prims;
+    info.reserve(count);
+    prims.reserve(count);
     for (const auto f : faces(g)) {
       const auto h0 = detail::geom::canonical_halfedge(f, g);
       const Vertex v0 = target(h0, g);
@@ -433,139 +536,145 @@ private:
       Vertex vp = target(h, g);
       Eigen::Vector3d pp = point(vp, g, pm);
       bool finite = p0.allFinite() && pp.allFinite();
-      const std::size_t first = tris.size();
+      const std::size_t first = info.size();
       for (h = next(h, g); h != h0; h = next(h, g)) {
         const Vertex vc = target(h, g);
         const Eigen::Vector3d pc = point(vc, g, pm);
         finite = finite && pc.allFinite();
-        tris.push_back(Tri{{p0, pp, pc}});
+        Build_prim b;
+        for (int k = 0; k < 3; ++k) {
+          const double lo = std::min({p0[k], pp[k], pc[k]}), hi = std::max({p0[k], pp[k], pc[k]});
+          b.lo[k] = down(lo);
+          b.hi[k] = up(hi);
+          b.c[k] = 0.5f * (b.lo[k] + b.hi[k]);
+        }
+        b.index = static_cast<std::uint32_t>(info.size());
+        prims.push_back(b);
         info.push_back(Info{f, {v0, vp, vc}});
         vp = vc;
         pp = pc;
       }
       if (!finite) {
-        tris.resize(first);
+        prims.resize(first);
         info.resize(first);
         ++skipped_;
       }
     }
-    const std::size_t n = tris.size();
+    const std::size_t n = info.size();
     if (n == 0) return;
     if (n >= npos / 2) throw invalid_input("Aabb_tree: too many triangles");
-    // Centroids and boxes, then the SAH build over an index permutation.
-    std::vector<Eigen::AlignedBox3d> boxes(n);
-    std::vector<Eigen::Vector3d> centers(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      boxes[i] = triangle_box(tris[i].p[0], tris[i].p[1], tris[i].p[2]);
-      centers[i] = boxes[i].center();
-      box_.extend(boxes[i]);
-    }
-    std::vector<std::uint32_t> order(n);
-    for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
-    nodes_.reserve(2 * n);
-    nodes_.push_back({});
-    struct Task {
-      std::uint32_t node, begin, end, depth;
-    };
-    std::vector<Task> tasks{{0, 0, static_cast<std::uint32_t>(n), 0}};
-    constexpr int bins = 16;
-    constexpr std::uint32_t leaf_size = 4;
-    while (!tasks.empty()) {
-      const Task t = tasks.back();
-      tasks.pop_back();
-      Eigen::AlignedBox3d nb, cb;
-      for (std::uint32_t i = t.begin; i < t.end; ++i) nb.extend(boxes[order[i]]), cb.extend(centers[order[i]]);
-      Node& node = nodes_[t.node];
-      for (int k = 0; k < 3; ++k) node.lo[k] = down(nb.min()[k]), node.hi[k] = up(nb.max()[k]);
-      const std::uint32_t count = t.end - t.begin;
-      auto make_leaf = [&] {
-        nodes_[t.node].first = t.begin;
-        nodes_[t.node].count = count;
+    Fbox root_centers;
+    for (const Build_prim& b : prims) root_centers.extend(b.c, b.c);
+    {
+      // Morton order of the centroids (21 bits per axis), by LSD radix sort.
+      float scale[3];
+      for (int k = 0; k < 3; ++k) {
+        const float e = root_centers.hi[k] - root_centers.lo[k];
+        scale[k] = e > 0 ? 2097151.0f / e : 0.0f;
+      }
+      auto spread = [](std::uint64_t x) {
+        x &= 0x1fffff;
+        x = (x | x << 32) & 0x1f00000000ffffULL;
+        x = (x | x << 16) & 0x1f0000ff0000ffULL;
+        x = (x | x << 8) & 0x100f00f00f00f00fULL;
+        x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+        x = (x | x << 2) & 0x1249249249249249ULL;
+        return x;
       };
-      if (count <= leaf_size) {
-        make_leaf();
-        continue;
+      struct Keyed {
+        std::uint64_t code;
+        std::uint32_t index;
+      };
+      detail::large_vector<Keyed> keys(n), tmp(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        std::uint64_t c = 0;
+        for (int k = 0; k < 3; ++k)
+          c |= spread(std::min<std::uint64_t>(
+                   static_cast<std::uint64_t>((prims[i].c[k] - root_centers.lo[k]) * scale[k]), 2097151))
+               << k;
+        keys[i] = {c, static_cast<std::uint32_t>(i)};
       }
-      // Binned SAH along the widest centroid axis.
-      int axis = 0;
-      const Eigen::Vector3d ext = cb.sizes();
-      if (ext[1] > ext[axis]) axis = 1;
-      if (ext[2] > ext[axis]) axis = 2;
-      std::uint32_t mid;
-      if (!(ext[axis] > 0) || t.depth >= max_depth - 40) {
-        mid = t.begin + count / 2;  // all centroids equal: split in the middle
-      } else {
-        const double lo = cb.min()[axis], scale = bins / ext[axis];
-        auto bin_of = [&](std::uint32_t i) {
-          return std::min(bins - 1, static_cast<int>((centers[i][axis] - lo) * scale));
-        };
-        Eigen::AlignedBox3d bb[bins];
-        std::uint32_t bc[bins] = {};
-        for (std::uint32_t i = t.begin; i < t.end; ++i) {
-          const int b = bin_of(order[i]);
-          bb[b].extend(boxes[order[i]]);
-          ++bc[b];
+      for (int shift = 0; shift < 63; shift += 11) {
+        std::uint32_t hist[2048] = {};
+        for (const Keyed& kk : keys) ++hist[(kk.code >> shift) & 2047];
+        std::uint32_t sum = 0;
+        for (auto& h : hist) sum += std::exchange(h, sum);
+        for (const Keyed& kk : keys) tmp[hist[(kk.code >> shift) & 2047]++] = kk;
+        keys.swap(tmp);
+      }
+      detail::large_vector<Build_prim> sorted(n);
+      for (std::size_t i = 0; i < n; ++i) sorted[i] = prims[keys[i].index];
+      prims.swap(sorted);
+      detail::large_vector<Build_prim>().swap(sorted);
+      nodes_.reserve(n);
+      nodes_.push_back({});
+      struct Range {
+        std::uint32_t node, begin, end;
+      };
+      std::vector<Range> todo{{0, 0, static_cast<std::uint32_t>(n)}};
+      constexpr std::uint32_t leaf_max = 4;
+      while (!todo.empty()) {
+        const Range r = todo.back();
+        todo.pop_back();
+        const std::uint32_t cnt = r.end - r.begin;
+        if (cnt <= leaf_max) {
+          nodes_[r.node].first = r.begin;
+          nodes_[r.node].count = cnt;
+          continue;
         }
-        auto area = [](const Eigen::AlignedBox3d& b) {
-          if (b.isEmpty()) return 0.0;
-          const Eigen::Vector3d s = b.sizes();
-          return s.x() * s.y() + s.y() * s.z() + s.z() * s.x();
-        };
-        double right_area[bins];
-        std::uint32_t right_count[bins];
-        Eigen::AlignedBox3d acc;
-        std::uint32_t cnt = 0;
-        for (int b = bins - 1; b > 0; --b) {
-          acc.extend(bb[b]);
-          cnt += bc[b];
-          right_area[b] = area(acc);
-          right_count[b] = cnt;
-        }
-        acc.setEmpty();
-        cnt = 0;
-        double best_cost = std::numeric_limits<double>::infinity();
-        int best_split = -1;
-        for (int b = 1; b < bins; ++b) {
-          acc.extend(bb[b - 1]);
-          cnt += bc[b - 1];
-          if (cnt == 0 || right_count[b] == 0) continue;
-          const double cost = area(acc) * cnt + right_area[b] * right_count[b];
-          if (cost < best_cost) best_cost = cost, best_split = b;
-        }
-        if (best_split < 0) {
-          mid = t.begin + count / 2;
+        const std::uint64_t first = keys[r.begin].code, last = keys[r.end - 1].code;
+        std::uint32_t mid;
+        if (first == last) {
+          mid = r.begin + cnt / 2;
         } else {
-          mid = static_cast<std::uint32_t>(
-              std::partition(order.begin() + t.begin, order.begin() + t.end,
-                             [&](std::uint32_t i) { return bin_of(i) < best_split; }) -
-              order.begin());
+          const int bit = 63 - std::countl_zero(first ^ last);
+          // The first key in the range with that bit set.
+          std::uint32_t lo = r.begin, hi = r.end - 1;
+          while (lo + 1 < hi) {
+            const std::uint32_t m = lo + (hi - lo) / 2;
+            if ((keys[m].code >> bit) & 1) hi = m; else lo = m;
+          }
+          mid = hi;
         }
+        const auto left = static_cast<std::uint32_t>(nodes_.size());
+        nodes_[r.node].first = left;
+        nodes_[r.node].count = 0;
+        nodes_.push_back({});
+        nodes_.push_back({});
+        todo.push_back({left + 1, mid, r.end});
+        todo.push_back({left, r.begin, mid});
       }
-      if (mid == t.begin || mid == t.end || t.depth >= max_depth - 40) {
-        mid = t.begin + count / 2;
-        std::nth_element(order.begin() + t.begin, order.begin() + mid, order.begin() + t.end,
-                         [&](std::uint32_t a, std::uint32_t b) { return centers[a][axis] < centers[b][axis]; });
+      // Boxes bottom-up: children come after their parent.
+      for (std::size_t i = nodes_.size(); i-- > 0;) {
+        Node& nd = nodes_[i];
+        Fbox b;
+        if (nd.count)
+          for (std::uint32_t j = nd.first; j < nd.first + nd.count; ++j) b.extend(prims[j].lo, prims[j].hi);
+        else
+          for (std::uint32_t c = nd.first; c < nd.first + 2; ++c) b.extend(nodes_[c].lo, nodes_[c].hi);
+        for (int k = 0; k < 3; ++k) nd.lo[k] = b.lo[k], nd.hi[k] = b.hi[k];
       }
-      const auto left = static_cast<std::uint32_t>(nodes_.size());
-      nodes_[t.node].first = left;
-      nodes_[t.node].count = 0;
-      nodes_.push_back({});
-      nodes_.push_back({});
-      tasks.push_back({left + 1, mid, t.end, t.depth + 1});
-      tasks.push_back({left, t.begin, mid, t.depth + 1});
     }
     nodes_.shrink_to_fit();
-    tris_.resize(n);
+    // Pass 2, in leaf order: the triangles' faces and corners, and their
+    // points read again from the mesh (independent reads, unlike a
+    // permutation in place, which chains them).
     info_.resize(n);
+    tris_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) info_[i] = info[prims[i].index];
+    detail::large_vector<Build_prim>().swap(prims);
+    detail::large_vector<Info>().swap(info);
     for (std::size_t i = 0; i < n; ++i) {
-      tris_[i] = tris[order[i]];
-      info_[i] = info[order[i]];
+      const auto& c = info_[i].corners;
+      for (int k = 0; k < 3; ++k) tris_[i].p[k] = point(c[k], g, pm);
     }
+    for (const Tri& t : tris_)
+      for (const auto& p : t.p) box_.extend(p);
   }
 
-  std::vector<Tri> tris_;
-  std::vector<Info> info_;
-  std::vector<Node> nodes_;
+  detail::large_vector<Tri> tris_;
+  detail::large_vector<Info> info_;
+  detail::large_vector<Node> nodes_;
   Eigen::AlignedBox3d box_;
   std::size_t skipped_ = 0;
 };

@@ -241,22 +241,12 @@ void for_each_self_intersection(const G& g, Report&& report) {
   std::sort(degenerate_faces.begin(), degenerate_faces.end());
   for (const Face f : degenerate_faces)
     if (!report(f, f)) return;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (degenerate[i]) continue;
-    const auto& p = tree.triangle_points(i);
-    Eigen::AlignedBox3d box(p[0]);
-    box.extend(p[1]);
-    box.extend(p[2]);
-    const Mesh_triangle<Vertex> ti{p, tree.triangle_corners(i)};
-    bool go_on = true;
-    tree.visit_triangles_in_box(box, [&](std::size_t j) {
-      if (j <= i || degenerate[j]) return true;
-      const Mesh_triangle<Vertex> tj{tree.triangle_points(j), tree.triangle_corners(j)};
-      if (faces_intersect(ti, tj)) go_on = report(tree.triangle_face(i), tree.triangle_face(j));
-      return go_on;
-    });
-    if (!go_on) return;
-  }
+  tree.for_each_overlapping_pair([&](std::size_t i, std::size_t j) {
+    if (degenerate[i] || degenerate[j]) return true;
+    const Mesh_triangle<Vertex> ti{tree.triangle_points(i), tree.triangle_corners(i)};
+    const Mesh_triangle<Vertex> tj{tree.triangle_points(j), tree.triangle_corners(j)};
+    return !faces_intersect(ti, tj) || report(tree.triangle_face(i), tree.triangle_face(j));
+  });
 }
 
 } // namespace detail::measures

@@ -1,9 +1,11 @@
 // genmesh/simplification.h — edge-collapse simplification of triangle meshes
 // (Garland & Heckbert, "Surface simplification using quadric error metrics",
-// SIGGRAPH 1997, and the policies of <genmesh/simplification/quadric.h>).
+// SIGGRAPH 1997, the policies of <genmesh/simplification/quadric.h>, and
+// Lindstrom & Turk's memoryless policy, <genmesh/simplification/lindstrom_turk.h>).
 //
 //   genmesh::simplify(mesh, {.target_ratio = 0.1});
 //   genmesh::simplify(mesh, genmesh::Simplification_options<genmesh::Probabilistic_quadrics>{.target_faces = 5000});
+//   genmesh::simplify(mesh, genmesh::Simplification_options<genmesh::Lindstrom_turk>{.target_ratio = 0.1});
 //
 // Repeatedly collapses the cheapest edge (collapse_edge, the local operation,
 // so Incidence_mesh collapses natively) and puts the surviving vertex where
@@ -31,14 +33,17 @@
 // - Triangles only (polygons are refused naming the face, or triangulated
 //   first with .triangulate = true); non-manifold vertices and non-finite
 //   points are refused naming the vertex.
-// - The fold-over test looks at the faces around the collapsed edge only: the
-//   surface may still come to touch itself elsewhere (no global
-//   self-intersection test yet).
+// - With .prevent_self_intersections (the default), no collapse makes the
+//   surface meet itself: the new faces are tested exactly against the faces
+//   near them (a spatial hash of face boxes). Input that already intersects
+//   itself keeps its intersections.
 // - An edge refused by a geometric test leaves the queue and returns when a
 //   collapse changes a vertex next to one of its ends (the test's inputs).
 #pragma once
 
+#include <genmesh/simplification/lindstrom_turk.h>
 #include <genmesh/simplification/quadric.h>
+#include <genmesh/visitor.h>
 
 #include <Eigen/Core>
 
@@ -47,6 +52,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <type_traits>
 
 namespace genmesh {
 
@@ -75,16 +81,6 @@ inline const char* to_string(Stop_reason r) {
   return "unknown";
 }
 
-/// Observes simplify(). Vertices are numbered by the mesh's vertex index map.
-struct Simplification_visitor {
-  /// Before each collapse: `removed` disappears, `survivor` stays and moves
-  /// to `position`; `cost` is the policy's cost (sqrt(cost) is the error).
-  std::function<void(std::size_t removed, std::size_t survivor, const Eigen::Vector3d& position, double cost)>
-      on_collapse;
-  /// Now and then (every 16384 collapses) and at the end: faces left, target.
-  std::function<void(std::size_t faces, std::size_t target)> on_progress;
-};
-
 /// The options of simplify(). Stop conditions combine: the first one met wins.
 /// With no target and no .max_error, simplify() collapses until no collapse
 /// is left.
@@ -98,15 +94,36 @@ struct Simplification_options {
   bool max_error_relative = false; ///< .max_error is a fraction of the bounding-box diagonal
   Policy policy = {};              ///< cost and placement
   /// Largest turn of a face's normal in one collapse, degrees. Flipped or
-  /// degenerate faces are refused whatever this is.
-  double max_normal_deviation = 45.0;
+  /// degenerate faces are refused whatever this is. Default: 45° for the
+  /// quadric policies; 90° (flips only, as CGAL) for Lindstrom_turk, whose
+  /// volume term already charges a fold (45° cost it up to 2x the Hausdorff
+  /// distance of CGAL's LT at 2% of the elephant's faces; 90° matches CGAL's).
+  double max_normal_deviation = detail::simplification::default_normal_deviation<Policy>;
   Border_mode border = Border_mode::preserve;
-  double border_weight = 100.0; ///< boundary quadric weight (CGAL's GH discontinuity multiplier)
+  double border_weight = 100.0; ///< boundary quadric weight (CGAL's GH discontinuity multiplier); quadric policies only
   bool triangulate = false;     ///< triangulate polygons first instead of refusing them
   bool check_input = true;      ///< refuse non-manifold vertices (an O(n) pass)
+  /// Refuse a collapse whose new faces would meet another face of the
+  /// surface (or each other) beyond the corners and edges they share: exact
+  /// predicates (genmesh::faces_intersect) against the faces near each new
+  /// face, found in a spatial hash of face boxes kept up to date.
+  bool prevent_self_intersections = true;
+  /// Smallest angle, degrees (at most 60), of a face a collapse changes; a
+  /// face already worse may stay as bad but not get worse. 0: no limit.
+  double min_angle = 0.0;
+  /// Largest valence the surviving vertex of a collapse may get. 0: no limit.
+  std::size_t max_valence = 0;
+  /// Feature lines: interior edges whose two faces' normals make at least
+  /// this angle, degrees (genmesh::detect_sharp_edges). A collapse never
+  /// crosses a feature line, only runs along it: a vertex on a line (two
+  /// feature edges) moves only along its segments; line ends and corners
+  /// (one, or three or more feature edges, or any at the border) never move.
+  std::optional<double> feature_angle = std::nullopt;
+  /// More feature edges (by edge index of the input mesh), read once before
+  /// the first collapse; with .feature_angle, the union.
+  std::function<bool(std::size_t edge_index)> edge_is_constrained = {};
   /// Vertices (by vertex index) that never move and never disappear.
   std::function<bool(std::size_t vertex_index)> is_locked = {};
-  Simplification_visitor visitor = {};
 };
 
 /// What simplify() achieved.
@@ -127,9 +144,19 @@ namespace genmesh {
 /// Throws genmesh::invalid_input (g untouched) on a non-triangle face (unless
 /// .triangulate), a non-finite point, a non-manifold vertex, or a target
 /// ratio outside [0, 1].
-template <detail::simplification::Simplifiable G, class Policy = Plane_quadrics>
-Simplification_result simplify(G& g, const Simplification_options<Policy>& options = {}) {
-  detail::simplification::Collapser<G, Policy> c(g, options);
+///
+/// The visitor (<genmesh/visitor.h>) sees on_started, then on_step("faces",
+/// done, total) — faces removed of the faces to remove (all of them with no
+/// target), every 16384 collapses, last with done == total whatever stopped
+/// it — and on_finished; and for each collapse, in this order:
+/// on_collapse_placement(h, position, cost, g) (edge(h) collapses,
+/// source(h) disappears, target(h) survives at `position`, an
+/// Eigen::Vector3d, at the policy's `cost`), before_collapse(h, g) and
+/// on_collapse(target(h), g). The mesh's points are current in every hook
+/// (on_collapse sees the survivor at its new point), so user data rides along.
+template <detail::simplification::Simplifiable G, class Policy = Plane_quadrics, class Visitor = Mutation_visitor>
+Simplification_result simplify(G& g, const Simplification_options<Policy>& options = {}, Visitor&& visitor = {}) {
+  detail::simplification::Collapser<G, Policy, std::remove_reference_t<Visitor>> c(g, options, visitor);
   return c.run();
 }
 

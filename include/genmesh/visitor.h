@@ -70,6 +70,10 @@ struct Mutation_visitor {
   void before_collapse(const auto& /*h*/, const auto& /*g*/) {}
   /// After collapse_edge: v is the surviving vertex.
   void on_collapse(const auto& /*v*/, const auto& /*g*/) {}
+  /// Simplification, before each collapse (before before_collapse): edge(h)
+  /// collapses, source(h) disappears, target(h) survives and moves to
+  /// `position` (an Eigen::Vector3d); `cost` is the policy's cost.
+  void on_collapse_placement(const auto& /*h*/, const auto& /*position*/, double /*cost*/, const auto& /*g*/) {}
   /// After split_face(h1, h2): h is the new halfedge (next(h1) == h); face(h)
   /// is the old face, face(opposite(h)) the new one.
   void on_split_face(const auto& /*h*/, const auto& /*g*/) {}

@@ -1,32 +1,46 @@
 // genmesh/simplification/detail/collapse.h — the collapse loop behind
 // genmesh::simplify (private; see <genmesh/simplification.h>).
 //
-// Per vertex: the policy's data (a quadric), a copy of the point in double,
-// a locked flag and a "has a refused edge" hint; per edge: the descriptor
-// and a refused flag. Collapse never adds elements, so these are vectors
-// sized once by the index bounds.
+// Per vertex: the policy's data (a quadric; nothing for a memoryless
+// policy), a copy of the point in double, locked / on-a-feature-line flags
+// and a "has a refused edge" hint; per edge: the descriptor, refused and
+// feature flags; per face (with the self-intersection guard): its box, a
+// stamp and an alive flag. Collapse never adds elements, so these are
+// vectors sized once by the index bounds.
 //
 // One collapse: pop the cheapest edge; recompute its placement (the same
-// numbers as when it was queued); refuse it if a face around it would turn by
-// more than the allowed angle, flip or degenerate, or if can_collapse_edge
-// says no (link condition); else drop the edges of its triangles from the
-// queue, collapse_edge, merge the policy data into the survivor, and requeue
-// every edge of the survivor, plus the refused edges of its neighbours (their
-// fold-over test depends on the survivor's point).
+// numbers as when it was queued; where locks and feature lines allow it);
+// refuse it if a face around it would turn by more than the allowed angle,
+// flip, degenerate or fall below .min_angle, if the survivor would exceed
+// .max_valence, if can_collapse_edge says no (link condition), or if a new
+// face would meet another face (exact test against the faces a spatial hash
+// finds near the new ones); else drop the edges of its triangles from the
+// queue, collapse_edge (the user's visitor rides along; the survivor's point
+// is written as it moves), merge the policy data into the survivor, and
+// requeue every edge of the survivor, plus the refused edges of its
+// neighbours (their fold-over test depends on the survivor's point) — for a
+// memoryless policy every edge at a neighbour of the survivor (their
+// profiles hold its faces).
 #pragma once
 
 #include <genmesh/concepts.h>
 #include <genmesh/exceptions.h>
+#include <genmesh/features.h>
+#include <genmesh/geometry.h>
+#include <genmesh/simplification/detail/face_grid.h>
 #include <genmesh/local_operations.h>
 #include <genmesh/point_traits.h>
 #include <genmesh/priority_queue.h>
 #include <genmesh/property_maps.h>
+#include <genmesh/simplification/profile.h>
+#include <genmesh/visitor.h>
 
 #include <boost/graph/graph_traits.hpp>
 
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -82,22 +96,36 @@ Placement fixed(const Policy& p, const Data& s, const Eigen::Vector3d& a, const 
   else return {s(x), x};
 }
 
-template <class G, class Policy>
+// The per-vertex data of a policy: none for a memoryless one.
+struct No_vertex_data {};
+template <class Policy>
+struct Vertex_data_of {
+  using type = No_vertex_data;
+};
+template <class Policy>
+  requires(!is_memoryless<Policy>)
+struct Vertex_data_of<Policy> {
+  using type = typename Policy::Vertex_data;
+};
+
+template <class G, class Policy, class Visitor>
 class Collapser {
   using V = vertex_descriptor_t<G>;
   using H = halfedge_descriptor_t<G>;
   using E = edge_descriptor_t<G>;
   using F = face_descriptor_t<G>;
-  using Data = typename Policy::Vertex_data;
+  static constexpr bool memoryless = is_memoryless<Policy>;
+  using Data = typename Vertex_data_of<Policy>::type;
   using Options = Simplification_options<Policy>;
 
  public:
-  Collapser(G& g, const Options& o)
-      : g_(g), o_(o), policy_(o.policy), vindex_(get(vertex_index, std::as_const(g))),
+  Collapser(G& g, const Options& o, Visitor& visitor)
+      : g_(g), o_(o), policy_(o.policy), vis_(visitor), vindex_(get(vertex_index, std::as_const(g))),
         eindex_(get(edge_index, std::as_const(g))) {}
 
   Simplification_result run() {
     Simplification_result r;
+    vis_.on_started(std::as_const(g_));
     prepare();
     const std::size_t faces0 = faces_;
     std::size_t target = 0;
@@ -111,8 +139,12 @@ class Collapser {
     const bool has_target = o_.target_faces || o_.target_ratio;
     double max_error = o_.max_error;
     if (o_.max_error_relative) max_error *= diagonal();
+    const std::size_t total = has_target && faces0 > target ? faces0 - target : faces0;
+    vis_.on_step("faces", 0, total);
     if (has_target && faces0 <= target) {
       r.stop_reason = Stop_reason::target_already_met;
+      vis_.on_step("faces", total, total);
+      vis_.on_finished(std::as_const(g_));
       finish(r);
       return r;
     }
@@ -135,11 +167,11 @@ class Collapser {
       if (collapse(ei)) {
         ++r.collapses;
         r.max_error = std::max(r.max_error, error);
-        if ((r.collapses & 16383u) == 0 && o_.visitor.on_progress) o_.visitor.on_progress(faces_, target);
+        if ((r.collapses & 16383u) == 0) vis_.on_step("faces", std::min(faces0 - faces_, total - 1), total);
       }
     }
-    if (o_.visitor.on_progress) o_.visitor.on_progress(faces_, target);
-    write_points();
+    vis_.on_step("faces", total, total);
+    vis_.on_finished(std::as_const(g_));
     finish(r);
     return r;
   }
@@ -147,6 +179,7 @@ class Collapser {
  private:
   std::size_t vi(V v) const { return static_cast<std::size_t>(get(vindex_, v)); }
   std::size_t ei(E e) const { return static_cast<std::size_t>(get(eindex_, e)); }
+  std::size_t fi(F f) const { return static_cast<std::size_t>(get(get(face_index, g_), f)); }
   bool border(H h) const { return face(h, g_) == boost::graph_traits<G>::null_face(); }
 
   template <class Range>
@@ -242,22 +275,17 @@ class Collapser {
     hint_.assign(vb, 0);
     refused_.assign(eb, 0);
     edesc_.assign(eb, E{});
+    if constexpr (memoryless) stamp_.assign(eb, 0);
     if (o_.is_locked)
       for (const V v : vertices(g_))
         if (o_.is_locked(vi(v))) locked_[vi(v)] = 1;
     if constexpr (requires { policy_.mean_edge_length; }) {
-      double sum = 0;
-      std::size_t n = 0;
-      for (const E e : edges(g_)) {
-        const H h = halfedge(e, g_);
-        sum += (pos_[vi(target(h, g_))] - pos_[vi(source(h, g_))]).norm();
-        ++n;
-      }
-      if (n > 0 && sum > 0) policy_.mean_edge_length = sum / static_cast<double>(n);
+      const double m = mean_edge_length();
+      if (m > 0) policy_.mean_edge_length = m;
     }
     // Faces in index order, corners from the lowest index: the same sums on
     // every backend.
-    for (const F f : faces(g_)) {
+    if constexpr (!memoryless) for (const F f : faces(g_)) {
       const H h0 = halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
       std::size_t a = vi(target(h0, g_)), b = vi(target(h1, g_)), c = vi(target(h2, g_));
       if (b < a && b < c) {
@@ -279,19 +307,73 @@ class Collapser {
       const std::size_t a = vi(source(h, g_)), b = vi(target(h, g_)), c = vi(target(next(h, g_), g_));
       if (o_.border == Border_mode::lock) {
         locked_[a] = locked_[b] = 1;
-      } else if (o_.border == Border_mode::preserve) {
+      } else if constexpr (!memoryless) if (o_.border == Border_mode::preserve) {
         const Data q = policy_.border(pos_[a], pos_[b], pos_[c], o_.border_weight);
         data_[a] = simplification::merge(policy_, data_[a], q);
         data_[b] = simplification::merge(policy_, data_[b], q);
       }
     }
+    on_line_.assign(vb, 0);
+    init_features(eb);
+    if (o_.prevent_self_intersections) {
+      const std::size_t fb = index_bound(face_index, g_);
+      fdesc_.assign(fb, F{});
+      slot_.assign(fb, Face_slot{});
+      for (const F f : faces(g_)) {
+        fdesc_[fi(f)] = f;
+        slot_[fi(f)].alive = 1;
+      }
+      build_grid();
+    }
     const double deg = std::clamp(o_.max_normal_deviation, 0.0, 180.0);
     cos_max_ = std::max(0.0, std::cos(deg * std::numbers::pi / 180.0));
+    cos_min_angle_ = o_.min_angle > 0 ? std::cos(std::min(o_.min_angle, 60.0) * std::numbers::pi / 180.0) : 1.0;
     queue_ = Mutable_priority_queue<Priority>(eb);
     queue_.reserve(eb);
     Placement pl;
     for (const E e : edges(g_))
       if (evaluate(halfedge(e, g_), pl)) queue_.push(ei(e), priority(halfedge(e, g_), pl.cost));
+  }
+
+  // Feature edges (interior edges only: borders follow .border) from
+  // .feature_angle and .edge_is_constrained; what they make of each vertex.
+  void init_features(std::size_t eb) {
+    features_ = o_.feature_angle.has_value() || static_cast<bool>(o_.edge_is_constrained);
+    if (!features_) return;
+    feature_.assign(eb, 0);
+    if (o_.feature_angle) {
+      const double angle = std::clamp(*o_.feature_angle, 0.0, 180.0);
+      const auto sharp = genmesh::sharp_edges(std::as_const(g_), angle);
+      for (const E e : edges(g_))
+        if (get(sharp, e)) feature_[ei(e)] = 1;
+    }
+    if (o_.edge_is_constrained)
+      for (const E e : edges(g_))
+        if (o_.edge_is_constrained(ei(e))) feature_[ei(e)] = 1;
+    for (const E e : edges(g_)) {
+      const H h = halfedge(e, g_);
+      if (border(h) || border(opposite(h, g_))) feature_[ei(e)] = 0;
+    }
+    for (const V v : vertices(g_)) classify(v);
+  }
+
+  // A vertex with two feature edges, not on the border, moves along them; one
+  // with one (a line's end), three or more (a corner), or any at the border
+  // never moves. Locks are never lifted.
+  void classify(V v) {
+    const H start = halfedge(v, g_);
+    if (start == boost::graph_traits<G>::null_halfedge()) return;
+    int n = 0;
+    bool on_border = false;
+    H x = start;
+    do {
+      if (feature_[ei(edge(x, g_))]) ++n;
+      if (border(x) || border(opposite(x, g_))) on_border = true;
+      x = opposite(next(x, g_), g_);
+    } while (x != start);
+    const std::size_t i = vi(v);
+    if (n > 0 && (n != 2 || on_border)) locked_[i] = 1;
+    on_line_[i] = n == 2 && !locked_[i];
   }
 
   Priority priority(H h, double cost) const {
@@ -300,18 +382,100 @@ class Collapser {
     return {cost, (a << 32) | b};
   }
 
+  // Where a collapse may put its vertex (see evaluate).
+  enum class Where { anywhere, at_a, at_b, on_segment, nowhere };
+
+  // The constraints' say on the collapse of edge k with ends a < b: locked
+  // ends stay; a vertex on a feature line moves only along it (it survives
+  // a collapse across, staying put; a collapse along its line keeps the new
+  // point on the old segment); two pinned ends across a line: refused.
+  Where where(std::size_t k, std::size_t a, std::size_t b) const {
+    if (locked_[a] && locked_[b]) return Where::nowhere;
+    if (!features_) return locked_[a] ? Where::at_a : locked_[b] ? Where::at_b : Where::anywhere;
+    if (feature_[k]) return locked_[a] ? Where::at_a : locked_[b] ? Where::at_b : Where::on_segment;
+    const bool pa = locked_[a] || on_line_[a], pb = locked_[b] || on_line_[b];
+    if (pa && pb) return Where::nowhere;
+    return pa ? Where::at_a : pb ? Where::at_b : Where::anywhere;
+  }
+
   // The placement of collapsing h's edge; false when it may not collapse at
-  // all (both ends locked). Independent of h's direction: the ends are taken
-  // in index order.
-  bool evaluate(H h, Placement& pl) const {
+  // all (see where(); a memoryless policy may refuse too). Independent of
+  // h's direction: the ends are taken in index order.
+  bool evaluate(H h, Placement& pl) {
     std::size_t a = vi(source(h, g_)), b = vi(target(h, g_));
     if (a > b) std::swap(a, b);
-    if (locked_[a] && locked_[b]) return false;
-    const Data s = simplification::merge(policy_, data_[a], data_[b]);
-    if (locked_[a]) pl = simplification::fixed(policy_, s, pos_[a], pos_[b], pos_[a]);
-    else if (locked_[b]) pl = simplification::fixed(policy_, s, pos_[a], pos_[b], pos_[b]);
-    else pl = policy_.place(s, pos_[a], pos_[b]);
-    return true;
+    const Where w = where(ei(edge(h, g_)), a, b);
+    if (w == Where::nowhere) return false;
+    if constexpr (memoryless) {
+      const Collapse_profile p = profile(h, a, b);
+      auto at = [&](const Eigen::Vector3d& x) { return policy_.fixed(p, x); };
+      pl = w == Where::at_a ? at(pos_[a]) : w == Where::at_b ? at(pos_[b])
+           : w == Where::on_segment ? best_of_three(at, a, b) : policy_.place(p);
+      return std::isfinite(pl.cost); // an infinite cost: the policy refuses for now
+    } else {
+      const Data s = simplification::merge(policy_, data_[a], data_[b]);
+      auto at = [&](const Eigen::Vector3d& x) { return simplification::fixed(policy_, s, pos_[a], pos_[b], x); };
+      pl = w == Where::at_a ? at(pos_[a]) : w == Where::at_b ? at(pos_[b])
+           : w == Where::on_segment ? best_of_three(at, a, b) : policy_.place(s, pos_[a], pos_[b]);
+      return true;
+    }
+  }
+
+  // The cheapest of a, b and their midpoint (ties in that order).
+  template <class At>
+  Placement best_of_three(const At& at, std::size_t a, std::size_t b) const {
+    Placement r = at(pos_[a]);
+    const Placement pb = at(pos_[b]);
+    if (pb.cost < r.cost) r = pb;
+    const Placement pm = at(0.5 * (pos_[a] + pos_[b]));
+    if (pm.cost < r.cost) r = pm;
+    return r;
+  }
+
+  // The profile of h's edge, ends a < b (vertex indices), in the canonical
+  // order of Collapse_profile. Valid until the next call.
+  Collapse_profile profile(H h, std::size_t a, std::size_t b) {
+    tri_keys_.clear();
+    border_keys_.clear();
+    link_keys_.clear();
+    for (const V v : {source(h, g_), target(h, g_)}) {
+      const std::uint32_t iv = static_cast<std::uint32_t>(vi(v));
+      const H start = halfedge(v, g_);
+      H x = start;
+      do {
+        // x: u → v.
+        const V u = source(x, g_);
+        const auto iu = static_cast<std::uint32_t>(vi(u));
+        if (iu != a && iu != b) link_keys_.push_back(iu);
+        const H ox = opposite(x, g_);
+        if (!border(x)) {
+          // The face (v, w, u), rotated to start at its lowest index.
+          std::array<std::uint32_t, 3> t{iv, static_cast<std::uint32_t>(vi(target(next(x, g_), g_))), iu};
+          std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+          tri_keys_.push_back(t);
+          if (border(ox) && o_.border != Border_mode::free) border_keys_.push_back({iu, iv});
+        } else if (o_.border != Border_mode::free) {
+          border_keys_.push_back({iv, iu});
+        }
+        x = opposite(next(x, g_), g_);
+      } while (x != start);
+    }
+    auto sort_unique = [](auto& keys) {
+      std::sort(keys.begin(), keys.end());
+      keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    };
+    sort_unique(tri_keys_);
+    sort_unique(border_keys_);
+    sort_unique(link_keys_);
+    tris_.resize(tri_keys_.size());
+    for (std::size_t i = 0; i < tri_keys_.size(); ++i)
+      tris_[i] = {pos_[tri_keys_[i][0]], pos_[tri_keys_[i][1]], pos_[tri_keys_[i][2]]};
+    borders_.resize(border_keys_.size());
+    for (std::size_t i = 0; i < border_keys_.size(); ++i)
+      borders_[i] = {pos_[border_keys_[i][0]], pos_[border_keys_[i][1]]};
+    link_.resize(link_keys_.size());
+    for (std::size_t i = 0; i < link_keys_.size(); ++i) link_[i] = pos_[link_keys_[i]];
+    return {pos_[a], pos_[b], tris_, borders_, link_};
   }
 
   // The vertex that survives the collapse of h's edge to x: a locked end,
@@ -319,6 +483,7 @@ class Collapser {
   bool target_survives(H h, const Eigen::Vector3d& x) const {
     const std::size_t p = vi(source(h, g_)), q = vi(target(h, g_));
     if (locked_[p] != locked_[q]) return locked_[q] != 0;
+    if (on_line_[p] != on_line_[q]) return on_line_[q] != 0;
     const double dp = (pos_[p] - x).squaredNorm(), dq = (pos_[q] - x).squaredNorm();
     if (dp != dq) return dq < dp;
     return q < p;
@@ -345,6 +510,11 @@ class Collapser {
             const double d = n0.dot(n1);
             if (!(d > 0) || d * d < cos_max_ * cos_max_ * l0 * l1) return false;
           }
+          if (cos_min_angle_ < 1) {
+            // No corner below .min_angle, unless the face was as bad before.
+            const double c1 = largest_corner_cosine(x, pos_[ia], pos_[ib]);
+            if (c1 > cos_min_angle_ && c1 > largest_corner_cosine(pos_[iv], pos_[ia], pos_[ib])) return false;
+          }
         }
       }
       h = opposite(next(h, g_), g_);
@@ -352,9 +522,155 @@ class Collapser {
     return true;
   }
 
+  // ---- the self-intersection guard ----------------------------------------
+
+  // The corners of live face f: vertex indices and points.
+  Mesh_triangle<std::uint32_t> triangle(std::size_t f) const {
+    const H h0 = halfedge(fdesc_[f], g_);
+    Mesh_triangle<std::uint32_t> t;
+    H h = h0;
+    for (int i = 0; i < 3; ++i, h = next(h, g_)) {
+      t.id[i] = static_cast<std::uint32_t>(vi(target(h, g_)));
+      t.p[i] = pos_[t.id[i]];
+    }
+    return t;
+  }
+
+  // The mean length of the live edges (0 without any).
+  double mean_edge_length() const {
+    double sum = 0;
+    std::size_t n = 0;
+    for (const E e : edges(g_)) {
+      const H h = halfedge(e, g_);
+      sum += (pos_[vi(target(h, g_))] - pos_[vi(source(h, g_))]).norm();
+      ++n;
+    }
+    return n > 0 ? sum / static_cast<double>(n) : 0.0;
+  }
+
+  // Every live face in the grid, with cells about twice the mean edge length.
+  void build_grid() {
+    const double m = mean_edge_length();
+    grid_.reset(m > 0 ? 2.0 * m : 1.0, faces_);
+    for (std::size_t f = 0; f < slot_.size(); ++f)
+      if (slot_[f].alive) {
+        const auto t = triangle(f);
+        const Box b = Box::of(t.p[0], t.p[1], t.p[2]);
+        slot_[f].set_box(b);
+        grid_.insert(static_cast<std::uint32_t>(f), b);
+      }
+    grid_faces_ = faces_;
+  }
+
+  // After a collapse onto q: q's faces go into the grid with their new
+  // boxes; when the faces have halved since the last build, rebuild with
+  // cells fitting the grown faces.
+  void update_grid(V q) {
+    if (2 * faces_ < grid_faces_) {
+      build_grid();
+      return;
+    }
+    const H start = halfedge(q, g_);
+    H x = start;
+    do {
+      if (!border(x)) {
+        const std::size_t f = fi(face(x, g_));
+        const auto t = triangle(f);
+        const Box b = Box::of(t.p[0], t.p[1], t.p[2]);
+        slot_[f].set_box(b);
+        grid_.insert(static_cast<std::uint32_t>(f), b);
+      }
+      x = opposite(next(x, g_), g_);
+    } while (x != start);
+  }
+
+  // Would the faces the collapse of edge(h) into target(h) at x makes meet
+  // any other face, or each other, beyond what they share? (Exact.)
+  bool stays_embedded(H h, const Eigen::Vector3d& x) {
+    const std::uint32_t ip = static_cast<std::uint32_t>(vi(source(h, g_))),
+                        iq = static_cast<std::uint32_t>(vi(target(h, g_)));
+    // The faces around p and q (they change or vanish), stamped; the new ones.
+    if (stamp_ring_ > 0xF0000000u) { // before the stamps wrap
+      for (auto& x : slot_) x.seen = 0;
+      stamp_ring_ = 0;
+    }
+    const std::uint32_t ring = ++stamp_ring_;
+    fresh_.clear();
+    for (const V v : {source(h, g_), target(h, g_)}) {
+      const H start = halfedge(v, g_);
+      H y = start;
+      do {
+        if (!border(y)) {
+          const std::size_t f = fi(face(y, g_));
+          if (slot_[f].seen != ring) {
+            slot_[f].seen = ring;
+            auto t = triangle(f);
+            int ends = 0;
+            for (int i = 0; i < 3; ++i)
+              if (t.id[i] == ip || t.id[i] == iq) {
+                ++ends;
+                t.id[i] = iq;
+                t.p[i] = x;
+              }
+            if (ends == 1) fresh_.push_back(t);
+          }
+        }
+        y = opposite(next(y, g_), g_);
+      } while (y != start);
+    }
+    if (fresh_.empty()) return true;
+    for (std::size_t i = 0; i < fresh_.size(); ++i)
+      for (std::size_t j = i + 1; j < fresh_.size(); ++j)
+        if (faces_intersect(fresh_[i], fresh_[j])) return false;
+    // Against the live faces near the new ones (one query for the union of
+    // their boxes; a candidate is tested exactly against each new face whose
+    // box its box meets). slot_.seen also marks the candidates seen (a stamp
+    // above the ring's: ring faces are skipped before they are stamped).
+    fresh_box_.resize(fresh_.size());
+    Box all = Box::of(fresh_[0].p[0], fresh_[0].p[1], fresh_[0].p[2]);
+    for (std::size_t i = 0; i < fresh_.size(); ++i) {
+      fresh_box_[i] = Box::of(fresh_[i].p[0], fresh_[i].p[1], fresh_[i].p[2]);
+      all.lo = all.lo.cwiseMin(fresh_box_[i].lo);
+      all.hi = all.hi.cwiseMax(fresh_box_[i].hi);
+    }
+    const std::uint32_t query = ++stamp_ring_;
+    bool hit = false;
+    grid_.query(all, [&](std::uint32_t f) {
+      Face_slot& sl = slot_[f];
+      if (hit || !sl.alive || sl.seen == ring || sl.seen == query) return;
+      sl.seen = query;
+      if (!sl.overlaps(all)) return;
+      bool built = false;
+      Mesh_triangle<std::uint32_t> u;
+      for (std::size_t i = 0; i < fresh_.size() && !hit; ++i) {
+        if (!sl.overlaps(fresh_box_[i])) continue;
+        if (!built) {
+          u = triangle(f);
+          built = true;
+        }
+        if (faces_intersect(fresh_[i], u)) hit = true;
+      }
+    });
+    if (hit) return false;
+    return true;
+  }
+
+  // The cosine of the triangle's smallest angle.
+  static double largest_corner_cosine(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+    auto cosine = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+      const double l = std::sqrt(u.squaredNorm() * v.squaredNorm());
+      return l > 0 ? u.dot(v) / l : 1.0;
+    };
+    return std::max({cosine(b - a, c - a), cosine(c - b, a - b), cosine(a - c, b - c)});
+  }
+
   // Requeues the edge of h (any of its two halfedges) with a fresh cost.
   void requeue(E e) {
     const std::size_t k = ei(e);
+    if constexpr (memoryless) {
+      if (stamp_[k] == epoch_) return; // already requeued after this collapse
+      stamp_[k] = epoch_;
+    }
     refused_[k] = 0;
     const H h = halfedge(e, g_);
     Placement pl;
@@ -374,7 +690,9 @@ class Collapser {
     const H oh = opposite(h, g_);
     const V p = source(h, g_), q = target(h, g_);
     if (!fan_keeps_normals(p, q, pl.position) || !fan_keeps_normals(q, p, pl.position) ||
-        !genmesh::can_collapse_edge(e, std::as_const(g_))) {
+        (o_.max_valence > 0 && valence_after(h) > o_.max_valence) ||
+        !genmesh::can_collapse_edge(e, std::as_const(g_)) ||
+        (o_.prevent_self_intersections && !stays_embedded(h, pl.position))) {
       refused_[k] = 1;
       hint_[vi(p)] = hint_[vi(q)] = 1;
       return false;
@@ -389,11 +707,51 @@ class Collapser {
       queue_.erase(ei(edge(prev(oh, g_), g_)));
     }
     const std::size_t ip = vi(p), iq = vi(q);
-    if (o_.visitor.on_collapse) o_.visitor.on_collapse(ip, iq, pl.position, pl.cost);
-    if (!genmesh::collapse_edge(e, g_)) return false; // can_collapse_edge said yes: never happens
-    data_[iq] = simplification::merge(policy_, data_[ip], data_[iq]);
+    // The two edges (p, apex), (q, apex) of each face of e become one: a
+    // feature if either was.
+    V apex[2];
+    std::uint8_t merged[2] = {0, 0};
+    int apexes = 0;
+    if (features_) {
+      if (top) {
+        apex[apexes] = target(next(h, g_), g_);
+        merged[apexes++] = feature_[ei(edge(next(h, g_), g_))] | feature_[ei(edge(prev(h, g_), g_))];
+      }
+      if (bottom) {
+        apex[apexes] = target(next(oh, g_), g_);
+        merged[apexes++] = feature_[ei(edge(next(oh, g_), g_))] | feature_[ei(edge(prev(oh, g_), g_))];
+      }
+    }
+    if (o_.prevent_self_intersections) {
+      if (top) slot_[fi(face(h, g_))].alive = 0;
+      if (bottom) slot_[fi(face(oh, g_))].alive = 0;
+    }
+    vis_.on_collapse_placement(h, std::as_const(pl.position), pl.cost, std::as_const(g_));
+    Point_writer writer{{}, this, pl.position};
+    if (!genmesh::collapse_edge(e, g_, writer)) return false; // can_collapse_edge said yes: never happens
+
+    if constexpr (!memoryless) data_[iq] = simplification::merge(policy_, data_[ip], data_[iq]);
     pos_[iq] = pl.position;
     faces_ -= static_cast<std::size_t>(top) + static_cast<std::size_t>(bottom);
+    if constexpr (memoryless) ++epoch_;
+    if (apexes > 0) merge_features(q, apex, merged, apexes);
+    if (o_.prevent_self_intersections) update_grid(q);
+    if constexpr (memoryless) {
+      // The profile of every edge at a neighbour of q holds a face at q.
+      const H start = halfedge(q, g_);
+      H x = start;
+      do {
+        const V n = source(x, g_);
+        const H s2 = halfedge(n, g_);
+        H y = s2;
+        do {
+          requeue(edge(y, g_));
+          y = opposite(next(y, g_), g_);
+        } while (y != s2);
+        x = opposite(next(x, g_), g_);
+      } while (x != start);
+      return true;
+    }
     // Every edge of the survivor changes cost; the refused edges of its
     // neighbours may pass their fold-over test now.
     const H start = halfedge(q, g_);
@@ -417,24 +775,107 @@ class Collapser {
     return true;
   }
 
-  void write_points() {
-    auto pm = get(vertex_point, g_);
-    using P = point_t<G>;
-    for (const V v : vertices(g_)) put(pm, v, from_eigen<P>(pos_[vi(v)]));
+  // After a collapse onto q: the merged edges (q, apex) take their flags;
+  // q and the apexes are classified again, and the edges of an apex whose
+  // class changed are requeued.
+  void merge_features(V q, const V* apex, const std::uint8_t* merged, int apexes) {
+    const H start = halfedge(q, g_);
+    H x = start;
+    do {
+      for (int i = 0; i < apexes; ++i)
+        if (source(x, g_) == apex[i]) feature_[ei(edge(x, g_))] = merged[i];
+      x = opposite(next(x, g_), g_);
+    } while (x != start);
+    classify(q);
+    for (int i = 0; i < apexes; ++i) {
+      const std::size_t k = vi(apex[i]);
+      const std::uint8_t before = static_cast<std::uint8_t>(locked_[k] * 2 + on_line_[k]);
+      classify(apex[i]);
+      if (before == locked_[k] * 2 + on_line_[k]) continue;
+      const H s2 = halfedge(apex[i], g_);
+      H y = s2;
+      do {
+        requeue(edge(y, g_));
+        y = opposite(next(y, g_), g_);
+      } while (y != s2);
+    }
   }
+
+  // Forwards collapse_edge's hooks to the user's visitor, writing the
+  // survivor's new point first (so that the mesh's points are current in
+  // every hook: before_collapse sees the old ones, on_collapse the new).
+  struct Point_writer : Mutation_visitor {
+    Collapser* c;
+    const Eigen::Vector3d& position;
+    void before_collapse(const H& h, const G& g) { c->vis_.before_collapse(h, g); }
+    void on_collapse(const V& v, const G& g) {
+      put(get(vertex_point, c->g_), v, from_eigen<point_t<G>>(position));
+      c->vis_.on_collapse(v, g);
+    }
+  };
+
+  // The valence of the survivor of collapsing edge(h): both ends' neighbours
+  // but the ends, the apexes counted once.
+  std::size_t valence_after(H h) const {
+    const std::size_t faces = static_cast<std::size_t>(!border(h)) + static_cast<std::size_t>(!border(opposite(h, g_)));
+    return static_cast<std::size_t>(degree(source(h, g_), g_) + degree(target(h, g_), g_)) - 2 - faces;
+  }
+
 
   G& g_;
   const Options& o_;
   Policy policy_;
+  Visitor& vis_;
   decltype(get(vertex_index, std::declval<const G&>())) vindex_;
   decltype(get(edge_index, std::declval<const G&>())) eindex_;
   std::size_t faces_ = 0;
   double cos_max_ = 0.5;
+  double cos_min_angle_ = 1.0; // cos(.min_angle); 1: no limit
   std::vector<Eigen::Vector3d> pos_;
   std::vector<Data> data_;
   std::vector<std::uint8_t> locked_, hint_, refused_;
+  // Feature lines: per edge, is it one; per vertex, does it move along one.
+  bool features_ = false;
+  // The self-intersection guard: faces by index, alive or not, stamps, grid.
+  std::vector<F> fdesc_;
+  // Per face: its box (float, rounded outwards: half the memory traffic of
+  // the query loop), the stamp of the last test that saw it, alive or not.
+  struct Face_slot {
+    float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    std::uint32_t seen = 0, alive = 0;
+    void set_box(const Box& b) {
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = static_cast<float>(b.lo[i]);
+        if (static_cast<double>(lo[i]) > b.lo[i]) lo[i] = std::nextafter(lo[i], -std::numeric_limits<float>::infinity());
+        hi[i] = static_cast<float>(b.hi[i]);
+        if (static_cast<double>(hi[i]) < b.hi[i]) hi[i] = std::nextafter(hi[i], std::numeric_limits<float>::infinity());
+      }
+    }
+    bool overlaps(const Box& b) const {
+      for (int i = 0; i < 3; ++i)
+        if (static_cast<double>(lo[i]) > b.hi[i] || b.lo[i] > static_cast<double>(hi[i])) return false;
+      return true;
+    }
+  };
+  std::vector<Face_slot> slot_;
+  std::uint32_t stamp_ring_ = 0;
+  std::vector<Mesh_triangle<std::uint32_t>> fresh_;
+  std::vector<Box> fresh_box_;
+  Face_grid grid_;
+  std::size_t grid_faces_ = 0;
+  std::vector<std::uint8_t> feature_, on_line_;
   std::vector<E> edesc_;
   Mutable_priority_queue<Priority> queue_;
+  // Memoryless policies: the profile's scratch, and the collapse count at
+  // which each edge was last requeued.
+  std::vector<std::array<std::uint32_t, 3>> tri_keys_;
+  std::vector<std::array<std::uint32_t, 2>> border_keys_;
+  std::vector<std::uint32_t> link_keys_;
+  std::vector<Profile_triangle> tris_;
+  std::vector<Profile_border_edge> borders_;
+  std::vector<Eigen::Vector3d> link_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t epoch_ = 0;
 };
 
 } // namespace genmesh::detail::simplification

@@ -1,0 +1,104 @@
+// genmesh/simplification/detail/face_grid.h — a dynamic spatial hash of face
+// bounding boxes (private; the self-intersection guard of simplify).
+//
+// A uniform grid of cubic cells, stored sparsely (cell key → face ids). A
+// face is listed in every cell its box overlaps. Entries are never removed:
+// a face that changed is inserted again with its new box — into the cells
+// of its new cell range that its last range did not cover, so that a face
+// re-inserted many times is not listed many times — and queries skip what
+// no longer overlaps (the caller checks the current box). An entry may be
+// stale, but a face is never missing from a cell its current box overlaps. The caller rebuilds the grid with a larger cell when faces have
+// grown (simplify: whenever the face count halves).
+#pragma once
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace genmesh::detail::simplification {
+
+struct Box {
+  Eigen::Vector3d lo, hi;
+  static Box of(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+    return {a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)};
+  }
+  bool overlaps(const Box& o) const {
+    return lo.x() <= o.hi.x() && o.lo.x() <= hi.x() && lo.y() <= o.hi.y() && o.lo.y() <= hi.y() &&
+           lo.z() <= o.hi.z() && o.lo.z() <= hi.z();
+  }
+};
+
+class Face_grid {
+ public:
+  void reset(double cell, std::size_t expected_faces) {
+    inv_ = cell > 0 ? 1.0 / cell : 1.0;
+    cells_.clear();
+    cells_.reserve(expected_faces);
+    for (auto& r : range_) r = Range{};
+  }
+
+  void insert(std::uint32_t f, const Box& b) {
+    if (f >= range_.size()) range_.resize(f + 1);
+    const Range n = range_of(b), old = range_[f];
+    if (old.contains(n)) return;
+    for_range(n, [&](std::int64_t x, std::int64_t y, std::int64_t z) {
+      if (!old.contains(x, y, z)) cells_[key(x, y, z)].push_back(f);
+    });
+    range_[f] = n;
+  }
+
+  // Calls visit(f) for every face listed in a cell b overlaps (a face may
+  // come more than once, and may no longer overlap b).
+  template <class Visit>
+  void query(const Box& b, Visit&& visit) const {
+    for_range(range_of(b), [&](std::int64_t x, std::int64_t y, std::int64_t z) {
+      const auto it = cells_.find(key(x, y, z));
+      if (it == cells_.end()) return;
+      for (const std::uint32_t f : it->second) visit(f);
+    });
+  }
+
+ private:
+  static constexpr std::int64_t half = std::int64_t{1} << 20; // 21 bits an axis
+
+  // An inclusive range of cells (empty by default).
+  struct Range {
+    std::int64_t x0 = 1, y0 = 1, z0 = 1, x1 = 0, y1 = 0, z1 = 0;
+    bool contains(std::int64_t x, std::int64_t y, std::int64_t z) const {
+      return x0 <= x && x <= x1 && y0 <= y && y <= y1 && z0 <= z && z <= z1;
+    }
+    bool contains(const Range& o) const {
+      return x0 <= o.x0 && o.x1 <= x1 && y0 <= o.y0 && o.y1 <= y1 && z0 <= o.z0 && o.z1 <= z1;
+    }
+  };
+
+  Range range_of(const Box& b) const {
+    return {coord(b.lo.x()), coord(b.lo.y()), coord(b.lo.z()), coord(b.hi.x()), coord(b.hi.y()), coord(b.hi.z())};
+  }
+
+  static std::uint64_t key(std::int64_t x, std::int64_t y, std::int64_t z) {
+    return (static_cast<std::uint64_t>(x) << 42) | (static_cast<std::uint64_t>(y) << 21) | static_cast<std::uint64_t>(z);
+  }
+
+  std::int64_t coord(double x) const {
+    const double c = std::floor(x * inv_);
+    return static_cast<std::int64_t>(std::clamp(c, -double(half), double(half - 1))) + half;
+  }
+
+  template <class F>
+  static void for_range(const Range& r, F&& f) {
+    for (std::int64_t x = r.x0; x <= r.x1; ++x)
+      for (std::int64_t y = r.y0; y <= r.y1; ++y)
+        for (std::int64_t z = r.z0; z <= r.z1; ++z) f(x, y, z);
+  }
+
+  double inv_ = 1.0;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
+  std::vector<Range> range_; // by face: the cells it was last inserted into
+};
+
+} // namespace genmesh::detail::simplification
