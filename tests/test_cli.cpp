@@ -99,7 +99,7 @@ TEST(Cli, DemoRunsEveryBackendAndTheyAgree) {
   int records = 0;
   for (std::string line; std::getline(lines, line); ++records)
     EXPECT_TRUE(json_bool(line, "same_as_reference")) << line;
-  EXPECT_GE(records, 72);  // six meshes, four steps, three backends
+  EXPECT_GE(records, 90);  // six meshes, five steps, three backends
 }
 
 // `info --json` on real meshes equals CGAL's own reading of the file.
@@ -592,6 +592,55 @@ TEST(Cli, SimplifyMeetsTheTargetOnEveryBackend) {
   Cli_run quads = genmesh("simplify " + real_mesh("cube_quad.off") + " " + tmp_path("x.off") + " --faces 4");
   EXPECT_EQ(quads.exit_code, 2);
   EXPECT_NE(quads.err.find("is not a triangle"), std::string::npos) << quads.err;
+}
+
+} // namespace
+
+namespace {
+
+// The floating-point field `key` of a one-line JSON record.
+double json_double(const std::string& json, const std::string& key) {
+  std::smatch m;
+  if (!std::regex_search(json, m, std::regex("\"" + key + "\":(-?[0-9.eE+-]+)")))
+    throw std::runtime_error("no number field '" + key + "' in: " + json);
+  return std::stod(m[1]);
+}
+
+// remesh: every backend writes the same file; the JSON record has the counts
+// and the quality of the result; bad options are usage errors.
+TEST(Cli, RemeshGivesTheSameResultOnEveryBackend) {
+  const std::string in = real_mesh("elephant.off");
+  std::string first;
+  for (const char* backend : {"halfedge", "surface-mesh", "incidence"}) {
+    SCOPED_TRACE(backend);
+    const std::string out = tmp_path(std::string("remeshed_") + backend + ".off");
+    Cli_run r = genmesh("remesh " + in + " " + out + " --iterations 3 --json --backend " + backend);
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_EQ(json_int(r.out, "iterations"), 3);
+    EXPECT_TRUE(json_bool(r.out, "valid"));
+    EXPECT_EQ(json_int(r.out, "euler_characteristic"), -4); // genus 3 kept
+    EXPECT_GT(json_int(r.out, "splits"), 0);
+    EXPECT_GT(json_double(r.out, "min_angle"), 25.0);
+    EXPECT_LT(json_double(r.out, "angles_below_30"), 0.01);
+    EXPECT_GT(json_double(r.out, "valence6_share"), 0.7);
+    EXPECT_LT(json_double(r.out, "hausdorff"), 0.05); // relative to the diagonal
+    EXPECT_GE(json_double(r.out, "seconds"), 0.0);
+    if (first.empty()) first = read_file(out);
+    else EXPECT_EQ(read_file(out), first);
+  }
+  // Options: an absolute length, Delaunay flips, features, quads triangulated first.
+  Cli_run cube = genmesh("remesh " + real_mesh("cube_quad.off") + " " + tmp_path("cube_remeshed.off") +
+                         " --edge-length 0.6 --features 45 --flips delaunay --json");
+  ASSERT_EQ(cube.exit_code, 0) << cube.out << cube.err;
+  EXPECT_GT(json_int(cube.out, "faces"), 12);
+  EXPECT_EQ(json_int(cube.out, "euler_characteristic"), 2);
+  const std::string x = tmp_path("x.off");
+  EXPECT_EQ(genmesh("remesh " + in + " " + x + " --edge-length 0").exit_code, 2);
+  EXPECT_EQ(genmesh("remesh " + in + " " + x + " --edge-length 1 --relative 1").exit_code, 2);
+  EXPECT_EQ(genmesh("remesh " + in + " " + x + " --flips nope").exit_code, 2);
+  EXPECT_EQ(genmesh("remesh " + in + " " + x + " --iterations -1").exit_code, 2);
+  EXPECT_EQ(genmesh("remesh " + in + " " + x + " --adaptive 2 1 0.1").exit_code, 2);
+  EXPECT_EQ(genmesh("remesh " + in).exit_code, 2);
 }
 
 } // namespace

@@ -9,6 +9,9 @@
 //   genmesh simplify IN OUT (--faces N | --ratio R | --error E) [--features DEG]
 //                          [--policy quadric|probabilistic|lindstrom-turk|length]
 //                          [--boundary preserve|lock|free] [--backend B] [--json]
+//   genmesh remesh IN OUT  [--edge-length L | --relative R] [--iterations N]
+//                          [--features DEG] [--adaptive MIN MAX ERR]
+//                          [--flips valence|delaunay] [--backend B] [--json]
 //   genmesh demo           [--json]                 every backend on built-in meshes
 //   genmesh measure A [B]  [--backend B] [--json] [--samples N]
 //                          quality and self-intersections of A (and B), with B
@@ -31,6 +34,7 @@
 #include <genmesh/local_operations.h>
 #include <genmesh/simplification.h>
 #include <genmesh/measures.h>
+#include <genmesh/remeshing.h>
 #include <genmesh/soup_to_mesh.h>
 #include <genmesh/subdivision.h>
 #include <genmesh/validity.h>
@@ -38,6 +42,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <array>
 #include <charconv>
 #include <chrono>
 #include <csignal>
@@ -54,6 +59,7 @@
 #include <span>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -112,6 +118,7 @@ const char* usage_text =
     "  convert IN OUT     read IN, build a valid mesh, write OUT (format from extension)\n"
     "  subdivide IN OUT   subdivide IN, write OUT\n"
     "  simplify IN OUT    simplify IN by edge collapses, write OUT\n"
+    "  remesh IN OUT      isotropic remeshing of IN, write OUT\n"
     "  demo               run genmesh on built-in meshes on every backend\n"
     "  measure A [B]      quality and self-intersections of A; with B also the\n"
     "                     two-way Hausdorff and RMS distance (relative to A's diagonal)\n"
@@ -132,7 +139,14 @@ const char* usage_text =
     "                     --boundary for simplify: preserve|lock|free (default preserve)\n"
     "  --features DEG     simplify: edges whose faces meet at DEG degrees or more are feature\n"
     "                     lines: collapses run along them, never across; corners stay\n"
-    "  --samples N        measure: face samples per direction (default max(10 x faces, 100000))\n"
+    "                     remesh: edges sharper than DEG degrees are kept as feature lines\n"
+    "  --samples N        measure: face samples per direction (default max(10 x faces, 100000));\n"
+    "                     remesh: for the Hausdorff figure (default 100000)\n"
+    "  --edge-length L | --relative R   remesh: target edge length, absolute or times the\n"
+    "                     input's mean edge length (default --relative 1)\n"
+    "  --iterations N     remesh: rounds (default 5)\n"
+    "  --adaptive MIN MAX ERR   remesh: curvature-adapted lengths in [MIN, MAX], chord error ERR\n"
+    "  --flips F          remesh: valence|delaunay (default valence)\n"
     "formats: OFF, OBJ, PLY (ASCII, binary), STL (ASCII, binary)\n";
 
 struct Args {
@@ -155,6 +169,11 @@ struct Args {
   std::optional<double> features;  // simplify --features DEG
   bool boundary_given = false;
   std::size_t samples = 0;  // measure --samples
+  // remesh (and --features)
+  std::optional<double> edge_length, relative;
+  std::optional<int> iterations;
+  std::optional<std::array<double, 3>> adaptive;
+  std::string flips = "valence";
 };
 
 // "123", "64K", "1.5G" (powers of 1024) -> bytes; nullopt if malformed.
@@ -240,6 +259,25 @@ Args parse(int argc, char** argv) {
           throw usage_error("--levels takes a whole number from 0 to 12, got '" + bounded(v, 40) + "'");
         a.levels = levels;
       }
+    } else if (s == "--edge-length" || s == "--relative" || s == "--iterations" || s == "--flips") {
+      if (i + 1 >= argc) throw usage_error(s + " needs a value");
+      const std::string v = argv[++i];
+      if (s == "--edge-length") a.edge_length = number_option(s, v, 1e-300, 1e300);
+      else if (s == "--relative") a.relative = number_option(s, v, 1e-300, 1e300);
+      else if (s == "--flips") a.flips = v;
+      else {
+        int n = -1;
+        auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+        if (v.empty() || ec != std::errc() || ptr != v.data() + v.size() || n < 0 || n > 1000)
+          throw usage_error("--iterations takes a whole number from 0 to 1000, got '" + bounded(v, 40) + "'");
+        a.iterations = n;
+      }
+    } else if (s == "--adaptive") {
+      if (i + 3 >= argc) throw usage_error("--adaptive needs three values: MIN MAX ERR");
+      std::array<double, 3> x{};
+      for (int k = 0; k < 3; ++k) x[static_cast<std::size_t>(k)] = number_option(s, argv[++i], 1e-300, 1e300);
+      if (x[0] > x[1]) throw usage_error("--adaptive MIN MAX ERR needs MIN <= MAX");
+      a.adaptive = x;
     } else if (s == "--samples") {
       if (i + 1 >= argc) throw usage_error(s + " needs a value");
       const std::string v = argv[++i];
@@ -260,7 +298,7 @@ Args parse(int argc, char** argv) {
     }
   }
   const std::map<std::string, std::size_t> files_needed{
-      {"info", 1}, {"check", 1}, {"convert", 2}, {"subdivide", 2}, {"simplify", 2}, {"demo", 0}};
+      {"info", 1}, {"check", 1}, {"convert", 2}, {"subdivide", 2}, {"simplify", 2}, {"remesh", 2}, {"demo", 0}};
   if (a.command == "measure") {
     if (a.files.size() != 1 && a.files.size() != 2)
       throw usage_error("'measure' takes 1 or 2 file arguments, got " + std::to_string(a.files.size()));
@@ -290,6 +328,11 @@ Args parse(int argc, char** argv) {
     if (!a.boundary_given) a.boundary = "preserve";
     if (a.boundary != "preserve" && a.boundary != "lock" && a.boundary != "free")
       throw usage_error("unknown boundary mode '" + a.boundary + "' (preserve|lock|free)");
+  }
+  if (a.command == "remesh") {
+    if (a.edge_length && a.relative) throw usage_error("remesh takes --edge-length or --relative, not both");
+    if (a.flips != "valence" && a.flips != "delaunay")
+      throw usage_error("unknown flip rule '" + bounded(a.flips, 40) + "' (valence|delaunay)");
   }
   return a;
 }
@@ -834,8 +877,10 @@ void random_local_operations(Mesh& mesh, unsigned seed, int count) {
 // The demo's steps: "build" (soup → mesh), "ops" (random local operations),
 // "subdiv" (two levels of Loop on triangle meshes, of Catmull-Clark on the
 // others), "simplify" (quadric edge collapse to a quarter of the faces,
-// polygons triangulated first). Later algorithms (remeshing) add theirs here.
-const std::vector<std::string> demo_steps{"build", "ops", "subdiv", "simplify"};
+// polygons triangulated first), "remesh" (three rounds of isotropic
+// remeshing at the mean edge length, edges sharper than 45° kept as
+// features, polygons triangulated first).
+const std::vector<std::string> demo_steps{"build", "ops", "subdiv", "simplify", "remesh"};
 
 bool all_triangles(const genmesh::Polygon_soup& soup) {
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
@@ -856,6 +901,7 @@ Demo_row run_step(const std::string& mesh_name, const std::string& backend, cons
     else genmesh::catmull_clark_subdivision(mesh, {.iterations = 2});
   }
   if (step == "simplify") genmesh::simplify(mesh, {.target_ratio = 0.25, .triangulate = true});
+  if (step == "remesh") genmesh::isotropic_remeshing(mesh, {.iterations = 3, .feature_angle = 45});
   Demo_row row{mesh_name, backend, step, genmesh::check_mesh(mesh), {}, 0};
   row.seconds = seconds_since(t0);
   row.result = genmesh::canonical(genmesh::to_soup(mesh));
@@ -1049,6 +1095,77 @@ int cmd_measure(const Args& a) {
   });
 }
 
+// ---- remesh ----------------------------------------------------------------
+
+// Progress on a terminal: the round being done.
+struct Remesh_progress : genmesh::Mutation_visitor {
+  bool show = false;
+  void on_step(std::string_view, std::size_t done, std::size_t total) {
+    if (show) std::fprintf(stderr, "\rremesh: round %zu / %zu   ", done, total);
+  }
+};
+
+int cmd_remesh(const Args& a) {
+  genmesh::Polygon_soup soup = read_input(a, a.files[0]);
+  genmesh::Remeshing_options o;
+  o.target_edge_length = a.edge_length;
+  if (a.relative) o.relative_edge_length = *a.relative;
+  if (a.iterations) o.iterations = *a.iterations;
+  if (a.features) o.feature_angle = *a.features;
+  if (a.adaptive) o.adaptive = genmesh::Adaptive_sizing{(*a.adaptive)[0], (*a.adaptive)[1], (*a.adaptive)[2]};
+  o.flips = a.flips == "delaunay" ? genmesh::Flips::delaunay : genmesh::Flips::valence;
+  Remesh_progress progress;
+  progress.show = !a.json && isatty(STDERR_FILENO);
+  return with_backend(a.backend, [&](auto& mesh) {
+    using Mesh = std::remove_reference_t<decltype(mesh)>;
+    try {
+      genmesh::build_mesh(soup, mesh, {.repair = a.repair});
+    } catch (const genmesh::invalid_input& e) {
+      return report_unbuildable(a.files[0], e);
+    }
+    Mesh input;
+    genmesh::build_mesh(genmesh::to_soup(mesh), input);
+    genmesh::Remeshing_result r;
+    double seconds = 0;
+    {
+      Stage stage("remeshing " + a.files[0]);
+      const auto t0 = std::chrono::steady_clock::now();
+      r = genmesh::isotropic_remeshing(mesh, o, progress);
+      seconds = seconds_since(t0);
+    }
+    if (progress.show) std::fprintf(stderr, "\n");
+    const genmesh::Mesh_report report = genmesh::check_mesh(mesh);
+    const auto q = genmesh::triangle_quality(mesh);
+    const double diag = genmesh::diagonal(input);
+    // 100 000 face samples each way (plus every vertex and edge midpoint):
+    // enough for the figure, and bounded on large outputs (--samples N).
+    genmesh::Hausdorff_options ho;
+    ho.samples = a.samples ? a.samples : 100'000;
+    const auto h = genmesh::hausdorff_distance(mesh, input, ho);
+    const double hausdorff = diag > 0 ? h.hausdorff / diag : std::nan("");
+    genmesh::write_mesh(a.files[1], mesh, {.binary = a.binary});
+    if (a.json) {
+      std::cout << "{\"command\":\"remesh\",\"file\":\"" << json_escape(a.files[0]) << "\",\"output\":\""
+                << json_escape(a.files[1]) << "\",\"backend\":\"" << a.backend << "\",\"flips\":\"" << a.flips
+                << "\",\"target_edge_length\":" << json_number(r.target_edge_length)
+                << ",\"iterations\":" << r.iterations << ",\"splits\":" << r.splits
+                << ",\"collapses\":" << r.collapses << ",\"flips_done\":" << r.flips << "," << json_counts(report)
+                << ",\"min_angle\":" << json_number(q.min_angle)
+                << ",\"angles_below_30\":" << json_number(q.angles_below_30)
+                << ",\"valence6_share\":" << json_number(q.valence6_share)
+                << ",\"hausdorff\":" << json_number(hausdorff) << ",\"seconds\":" << seconds << "}\n";
+    } else {
+      std::printf("%s -> %s: %zu -> %zu faces, L = %g, %d rounds (%zu splits, %zu collapses, %zu flips), %g s\n"
+                  "  min angle %.2f deg, angles below 30 deg %.3f %%, interior valence 6 %.1f %%,"
+                  " Hausdorff %.3g of the diagonal\n",
+                  a.files[0].c_str(), a.files[1].c_str(), soup.num_faces(), std::size_t(report.faces),
+                  r.target_edge_length, r.iterations, r.splits, r.collapses, r.flips, seconds, q.min_angle,
+                  100 * q.angles_below_30, 100 * q.valence6_share, hausdorff);
+    }
+    return report.ok() ? exit_ok : exit_invalid;
+  });
+}
+
 } // namespace
 
 // SIGINT, SIGTERM, SIGHUP: remove the output's temporary (an existing output
@@ -1086,6 +1203,7 @@ int main(int argc, char** argv) {
     if (a.command == "convert") return cmd_convert(a);
     if (a.command == "subdivide") return cmd_subdivide(a);
     if (a.command == "simplify") return cmd_simplify(a);
+    if (a.command == "remesh") return cmd_remesh(a);
     if (a.command == "measure") return cmd_measure(a);
     return cmd_info_or_check(a);
   } catch (const usage_error& e) {

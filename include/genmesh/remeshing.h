@@ -47,6 +47,10 @@
 #include <genmesh/remeshing/options.h>
 #include <genmesh/remeshing/split_long_edges.h>
 #include <genmesh/remeshing/tangential_relaxation.h>
+#include <genmesh/visitor.h>
+
+#include <type_traits>
+#include <utility>
 
 namespace genmesh {
 
@@ -54,9 +58,13 @@ namespace genmesh {
 /// (options.target_edge_length, or options.relative_edge_length times the
 /// mean edge length). Returns what was done. Throws genmesh::invalid_input
 /// (g unchanged) on the refusals listed at the top of this header.
-template <detail::remeshing::Remeshable G>
-Remeshing_result isotropic_remeshing(G& g, const Remeshing_options& options = {}) {
-  detail::remeshing::Remesher<G> r(g, options, "isotropic_remeshing");
+/// The visitor (<genmesh/visitor.h>) sees every split, collapse and flip,
+/// and on_step("iteration", done, options.iterations) after each round.
+template <detail::remeshing::Remeshable G, class Visitor = Mutation_visitor>
+Remeshing_result isotropic_remeshing(G& g, const Remeshing_options& options = {}, Visitor&& visitor = {}) {
+  detail::remeshing::Remesher<G, std::remove_cvref_t<Visitor>> r(g, options, "isotropic_remeshing", visitor);
+  visitor.on_started(std::as_const(g));
+  visitor.on_step("iteration", 0, static_cast<std::size_t>(options.iterations));
   if (options.projection) r.build_reference();
   for (int i = 0; i < options.iterations; ++i) {
     r.split_long_edges();
@@ -69,8 +77,10 @@ Remeshing_result isotropic_remeshing(G& g, const Remeshing_options& options = {}
     r.project();
     r.remove_bad_triangles();
     ++r.result().iterations;
+    visitor.on_step("iteration", static_cast<std::size_t>(i + 1), static_cast<std::size_t>(options.iterations));
   }
   r.finish();
+  visitor.on_finished(std::as_const(g));
   return r.result();
 }
 
