@@ -420,6 +420,11 @@ TYPED_TEST(Spatial_index, ClosestPointEqualsBruteForce) {
       }
       const auto r = tree.closest_point(q);
       ASSERT_NEAR(std::sqrt(r.squared_distance), std::sqrt(best), 1e-12 * diag) << it;
+      if (best > 0) {  // a bound below the distance finds nothing, and says so
+        const auto none = tree.closest_point(q, 0.25 * best);
+        ASSERT_EQ(none.face, boost::graph_traits<TypeParam>::null_face()) << it;
+        ASSERT_EQ(none.squared_distance, std::numeric_limits<double>::infinity()) << it;
+      }
       ASSERT_LT((r.point - best_p).norm(), 1e-12 * diag) << it;
       // The face and barycentric coordinates give the point back.
       Vector3d rebuilt = Vector3d::Zero();

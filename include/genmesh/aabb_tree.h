@@ -166,11 +166,11 @@ public:
 
   /// As closest_point(q), searching only within sqrt(max_squared_distance)
   /// of q (a bound known to the caller, e.g. the previous query's distance
-  /// plus the step since, prunes the search); nullopt-like result with
-  /// squared_distance = infinity and face = null_face() when nothing is nearer.
+  /// plus the step since, prunes the search). When nothing is within the
+  /// bound: face = null_face(), squared_distance = infinity, point unset.
   Closest closest_point(const Eigen::Vector3d& q, double max_squared_distance) const {
     Closest r{};
-    r.squared_distance = max_squared_distance;
+    r.squared_distance = std::numeric_limits<double>::infinity();
     r.face = boost::graph_traits<G>::null_face();
     std::uint32_t best = npos;
     if (nodes_.empty()) return r;
