@@ -1014,7 +1014,8 @@ int cmd_measure(const Args& a) {
     if (progress) std::fprintf(stderr, "\n");
     std::optional<genmesh::Hausdorff_result> h;
     if (meshes.size() == 2) {
-      genmesh::Hausdorff_options o{.samples = a.samples};
+      genmesh::Hausdorff_options o;
+      o.samples = a.samples;
       if (progress)
         o.progress = [](std::size_t done, std::size_t all) {
           std::fprintf(stderr, "\rmeasure: Hausdorff distance, %zu / %zu samples", done, all);
