@@ -4,6 +4,7 @@
 #include <genmesh/adaptors/cgal.h>
 #include <genmesh/halfedge_mesh.h>
 #include <genmesh/incidence_mesh.h>
+#include <genmesh/soup_to_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -30,6 +31,14 @@ using Backends = ::testing::Types<Halfedge_mesh, Surface_mesh, Incidence_mesh>;
 /// for tests that corrupt links on purpose or run CGAL::Euler on the mesh
 /// itself. Incidence_mesh derives its links from the matrices instead.
 using Pointer_backends = ::testing::Types<Halfedge_mesh, Surface_mesh>;
+
+/// A mesh of backend G linked from a polygon soup (build_mesh's checks on).
+template <class G>
+G mesh_of(const genmesh::Polygon_soup& soup) {
+  G g;
+  genmesh::build_mesh(soup, g);
+  return g;
+}
 
 /// A real mesh from libcgal-demo (fetched by scripts/run.sh setup). Missing
 /// data is a failure, never a silent skip.

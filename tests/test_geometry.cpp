@@ -36,15 +36,9 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 using Eigen::Vector3d;
 using genmesh::Polygon_soup;
 using genmesh_test::Backends;
+using genmesh_test::mesh_of;
 using genmesh_test::Kernel;
 using genmesh_test::Surface_mesh;
-
-template <class G>
-G mesh_of(const Polygon_soup& soup) {
-  G g;
-  genmesh::build_mesh(soup, g);
-  return g;
-}
 
 const Polygon_soup& soup_of(const std::string& name) {
   static std::map<std::string, Polygon_soup> cache;

@@ -35,13 +35,7 @@ namespace {
 
 using genmesh::Polygon_soup;
 using genmesh_test::Backends;
-
-template <class G>
-G mesh_of(const Polygon_soup& soup) {
-  G g;
-  genmesh::build_mesh(soup, g);
-  return g;
-}
+using genmesh_test::mesh_of;
 
 Polygon_soup real(const std::string& name) { return genmesh::read_soup(genmesh_test::real_mesh(name)); }
 

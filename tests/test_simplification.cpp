@@ -39,6 +39,7 @@ namespace {
 
 using genmesh::Polygon_soup;
 using genmesh_test::Backends;
+using genmesh_test::mesh_of;
 
 struct Named_soup {
   std::string name;
@@ -64,13 +65,6 @@ const std::vector<Named_soup>& inputs() {
 template <class Range>
 std::size_t count(const Range& r) {
   return static_cast<std::size_t>(std::distance(r.begin(), r.end()));
-}
-
-template <class G>
-G mesh_of(const Polygon_soup& soup) {
-  G g;
-  genmesh::build_mesh(soup, g);
-  return g;
 }
 
 template <class G>

@@ -33,6 +33,7 @@ namespace {
 
 using genmesh::Polygon_soup;
 using genmesh_test::Backends;
+using genmesh_test::mesh_of;
 
 // Loop and Catmull-Clark refine these in place; the incidence mesh (no
 // set_next) goes through a Halfedge_mesh copy.
@@ -68,13 +69,6 @@ genmesh::Subdivision_result run(Scheme s, G& g, int levels,
 std::string name(Scheme s) {
   const char* n[] = {"loop", "loop_warren", "catmull_clark", "midpoint", "sqrt3", "doo_sabin", "butterfly"};
   return n[static_cast<int>(s)];
-}
-
-template <class G>
-G mesh_of(const Polygon_soup& soup) {
-  G g;
-  genmesh::build_mesh(soup, g);
-  return g;
 }
 
 struct Named_soup {
