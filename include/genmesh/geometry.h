@@ -24,7 +24,7 @@
 #pragma once
 
 #include <genmesh/concepts.h>
-#include <genmesh/detail/triangle_intersection.h>
+#include <genmesh/detail/geometry/triangle_intersection.h>
 #include <genmesh/point_traits.h>
 #include <genmesh/property_maps.h>
 
@@ -38,6 +38,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 
 namespace genmesh {
@@ -112,6 +113,27 @@ inline constexpr struct Face_normal_fn {
     return (*this)(f, g, get(vertex_point, g));
   }
 } face_normal{};
+
+/// polygon_normal(points, corners): face_normal of a polygon given by
+/// positions, points[corners[0]], points[corners[1]], ... (a polygon soup's
+/// face): twice its vector area, summed over the fan from corners[0]; zero
+/// for fewer than three corners. `points` is indexable by a corner and
+/// yields something convertible to Eigen::Vector3d.
+template <class Points, class Corners>
+Eigen::Vector3d polygon_normal(const Points& points, const Corners& corners) {
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  const std::size_t k = std::size(corners);
+  if (k < 3) return n;
+  const auto at = [&](std::size_t i) { return Eigen::Vector3d(points[corners[i]]); };
+  const Eigen::Vector3d p0 = at(0);
+  Eigen::Vector3d prev = at(1) - p0;
+  for (std::size_t i = 2; i < k; ++i) {
+    const Eigen::Vector3d cur = at(i) - p0;
+    n += prev.cross(cur);
+    prev = cur;
+  }
+  return n;
+}
 
 /// unit_face_normal(f, g[, pm]): face_normal normalized; zero for a degenerate face.
 inline constexpr struct Unit_face_normal_fn {
