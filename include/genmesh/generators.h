@@ -27,10 +27,11 @@ namespace detail {
 // Reverse face f when its normal points towards `inside`.
 inline void orient_away_from(Polygon_soup& s, std::size_t f, const Eigen::Vector3d& inside) {
   auto c = s.face(f);
+  std::vector<Eigen::Vector3d> corners;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  for (auto i : c) centroid += s.points[i];
+  for (auto i : c) corners.push_back(s.points[i]), centroid += s.points[i];
   centroid /= static_cast<double>(c.size());
-  if (polygon_normal(s.points, c).dot(centroid - inside) < 0) std::reverse(c.begin(), c.end());
+  if (polygon_normal(corners).dot(centroid - inside) < 0) std::reverse(c.begin(), c.end());
 }
 
 } // namespace detail

@@ -38,8 +38,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <iterator>
 #include <limits>
+#include <span>
 
 namespace genmesh {
 
@@ -67,6 +67,31 @@ halfedge_descriptor_t<G> canonical_halfedge(face_descriptor_t<G> f, const G& g) 
 }
 
 } // namespace detail::geom
+
+// On points: the primitives the mesh functions below, the readers and
+// writers (STL facet normals) and the algorithms share.
+
+/// (b − a) × (c − a): twice the vector area of triangle abc, directed by
+/// its orientation.
+inline Eigen::Vector3d triangle_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                       const Eigen::Vector3d& c) {
+  return (b - a).cross(c - a);
+}
+
+/// v / |v|, or zero when |v| is zero (a degenerate face has no direction).
+inline Eigen::Vector3d normalized_or_zero(const Eigen::Vector3d& v) {
+  const double l = v.norm();
+  return l > 0 ? Eigen::Vector3d(v / l) : Eigen::Vector3d::Zero();
+}
+
+/// Twice the vector area of the polygon with these corners, as a fan from
+/// corners[0] (so it equals face_normal when corners[0] is the face's
+/// canonical corner); zero for fewer than three corners.
+inline Eigen::Vector3d polygon_normal(std::span<const Eigen::Vector3d> corners) {
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (std::size_t k = 1; k + 1 < corners.size(); ++k) n += triangle_normal(corners[0], corners[k], corners[k + 1]);
+  return n;
+}
 
 // Every function below is a function object (as the local operations are),
 // so argument-dependent lookup never finds it: CGAL's unqualified calls such
@@ -114,34 +139,11 @@ inline constexpr struct Face_normal_fn {
   }
 } face_normal{};
 
-/// polygon_normal(points, corners): face_normal of a polygon given by
-/// positions, points[corners[0]], points[corners[1]], ... (a polygon soup's
-/// face): twice its vector area, summed over the fan from corners[0]; zero
-/// for fewer than three corners. `points` is indexable by a corner and
-/// yields something convertible to Eigen::Vector3d.
-template <class Points, class Corners>
-Eigen::Vector3d polygon_normal(const Points& points, const Corners& corners) {
-  Eigen::Vector3d n = Eigen::Vector3d::Zero();
-  const std::size_t k = std::size(corners);
-  if (k < 3) return n;
-  const auto at = [&](std::size_t i) { return Eigen::Vector3d(points[corners[i]]); };
-  const Eigen::Vector3d p0 = at(0);
-  Eigen::Vector3d prev = at(1) - p0;
-  for (std::size_t i = 2; i < k; ++i) {
-    const Eigen::Vector3d cur = at(i) - p0;
-    n += prev.cross(cur);
-    prev = cur;
-  }
-  return n;
-}
-
 /// unit_face_normal(f, g[, pm]): face_normal normalized; zero for a degenerate face.
 inline constexpr struct Unit_face_normal_fn {
   template <FaceGraph G, PointMapOf<G> PointMap>
   Eigen::Vector3d operator()(face_descriptor_t<G> f, const G& g, const PointMap& pm) const {
-    const Eigen::Vector3d n = face_normal(f, g, pm);
-    const double l = n.norm();
-    return l > 0 ? Eigen::Vector3d(n / l) : Eigen::Vector3d::Zero();
+    return normalized_or_zero(face_normal(f, g, pm));
   }
   template <FaceGraph G>
   Eigen::Vector3d operator()(face_descriptor_t<G> f, const G& g) const {

@@ -264,13 +264,17 @@ inline void check_fans(const Polygon_soup& soup, const Soup_edges& e, Soup_repor
 /// Zero-area faces (a warning): the vector area (geometry.h's
 /// polygon_normal) against the longest edge squared.
 inline void check_zero_area(const Polygon_soup& soup, const Soup_edges& e, Soup_report& r, const Problem_sink& add) {
+  std::vector<Eigen::Vector3d> corners;
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     if (!e.usable[f]) continue;
     auto c = soup.face(f);
+    corners.clear();
     double longest = 0;
-    for (std::size_t k = 0; k < c.size(); ++k)
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      corners.push_back(soup.points[c[k]]);
       longest = std::max(longest, (soup.points[c[(k + 1) % c.size()]] - soup.points[c[k]]).squaredNorm());
-    if (!(0.5 * polygon_normal(soup.points, c).norm() > 1e-12 * longest)) {
+    }
+    if (!(0.5 * polygon_normal(corners).norm() > 1e-12 * longest)) {
       ++r.zero_area_faces;
       add(Soup_problem_kind::zero_area_face, "face " + std::to_string(f), "has zero area", {f}, {});
     }
