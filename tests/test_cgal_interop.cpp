@@ -993,6 +993,14 @@ bool all_triangles(const genmesh::Polygon_soup& s) {
   return true;
 }
 
+// Loop, Catmull-Clark, butterfly and midpoint refine these in place through
+// the generic bulk append (no genmesh_native_append_elements): this test is
+// what runs that fallback.
+static_assert(genmesh::detail::subdivision::In_place_refinable<Polyhedron_with_ids> &&
+              !genmesh::detail::subdivision::Has_native_append<Polyhedron_with_ids>);
+static_assert(genmesh::detail::subdivision::In_place_refinable<Om_poly_d> &&
+              !genmesh::detail::subdivision::Has_native_append<Om_poly_d>);
+
 TEST(CgalToGenmesh, EverySchemeOnPolyhedronAndOpenMeshEqualsHalfedgeMesh) {
   for (const auto& in : subdivision_inputs()) {
     for (Scheme s : all_schemes) {
