@@ -13,6 +13,7 @@
 #include <genmesh/adaptors/openmesh.h>
 #include <genmesh/concepts.h>
 #include <genmesh/generators.h>
+#include <genmesh/mesh_check.h>
 #include <genmesh/remeshing.h>
 #include <genmesh/simplification.h>
 #include <genmesh/subdivision.h>
