@@ -539,7 +539,9 @@ class Collapser {
     return n > 0 ? sum / static_cast<double>(n) : 0.0;
   }
 
-  // Every live face in the grid, with cells about twice the mean edge length.
+  // Every live face in the grid, with cells four times the mean edge length
+  // (208k armadillo → 10%, guard time: 1x 2.9 s, 2x 2.2 s, 3x-4x 1.7 s, 8x
+  // 1.9 s: fewer lookups and re-insertions outweigh longer lists).
   void build_grid() {
     const double m = mean_edge_length();
     grid_.reset(m > 0 ? 4.0 * m : 1.0, faces_);
@@ -637,14 +639,20 @@ class Collapser {
     grid_.query(all, [&](std::span<const std::uint32_t> cell) {
       // Nearly every slot read is a cache miss: ask for it a few faces ahead.
       constexpr std::size_t ahead = 8;
-      for (std::size_t k = 0; k < std::min(ahead, cell.size()); ++k) __builtin_prefetch(&slot_[cell[k]]);
+      for (std::size_t k = 0; k < std::min(ahead, cell.size()); ++k) prefetch(&slot_[cell[k]]);
       for (std::size_t k = 0; k < cell.size() && !hit; ++k) {
-        if (k + ahead < cell.size()) __builtin_prefetch(&slot_[cell[k + ahead]]);
+        if (k + ahead < cell.size()) prefetch(&slot_[cell[k + ahead]]);
         test_candidate(cell[k], ring, query, all, hit);
       }
     });
     if (hit) return false;
     return true;
+  }
+
+  static void prefetch([[maybe_unused]] const void* p) {
+#if defined(__GNUC__) || defined(__clang__)
+    __builtin_prefetch(p);
+#endif
   }
 
   // The exact test of candidate face f against the new faces (a no-op for a
