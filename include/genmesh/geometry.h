@@ -39,6 +39,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <span>
 
 namespace genmesh {
 
@@ -66,6 +67,31 @@ halfedge_descriptor_t<G> canonical_halfedge(face_descriptor_t<G> f, const G& g) 
 }
 
 } // namespace detail::geom
+
+// On points: the primitives the mesh functions below, the readers and
+// writers (STL facet normals) and the algorithms share.
+
+/// (b − a) × (c − a): twice the vector area of triangle abc, directed by
+/// its orientation.
+inline Eigen::Vector3d triangle_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                       const Eigen::Vector3d& c) {
+  return (b - a).cross(c - a);
+}
+
+/// v / |v|, or zero when |v| is zero (a degenerate face has no direction).
+inline Eigen::Vector3d normalized_or_zero(const Eigen::Vector3d& v) {
+  const double l = v.norm();
+  return l > 0 ? Eigen::Vector3d(v / l) : Eigen::Vector3d::Zero();
+}
+
+/// Twice the vector area of the polygon with these corners, as a fan from
+/// corners[0] (so it equals face_normal when corners[0] is the face's
+/// canonical corner); zero for fewer than three corners.
+inline Eigen::Vector3d polygon_normal(std::span<const Eigen::Vector3d> corners) {
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (std::size_t k = 1; k + 1 < corners.size(); ++k) n += triangle_normal(corners[0], corners[k], corners[k + 1]);
+  return n;
+}
 
 // Every function below is a function object (as the local operations are),
 // so argument-dependent lookup never finds it: CGAL's unqualified calls such
@@ -134,9 +160,7 @@ inline constexpr struct Face_normal_fn {
 inline constexpr struct Unit_face_normal_fn {
   template <FaceGraph G, PointMapOf<G> PointMap>
   Eigen::Vector3d operator()(face_descriptor_t<G> f, const G& g, const PointMap& pm) const {
-    const Eigen::Vector3d n = face_normal(f, g, pm);
-    const double l = n.norm();
-    return l > 0 ? Eigen::Vector3d(n / l) : Eigen::Vector3d::Zero();
+    return normalized_or_zero(face_normal(f, g, pm));
   }
   template <FaceGraph G>
   Eigen::Vector3d operator()(face_descriptor_t<G> f, const G& g) const {
