@@ -127,13 +127,6 @@ inline constexpr struct Point_fn {
   }
 } point{};
 
-/// triangle_normal(a, b, c): (b − a) × (c − a), twice the vector area of the
-/// triangle (a, b, c), pointing where (a, b, c) turns counter-clockwise; zero
-/// for a degenerate triangle.
-inline Eigen::Vector3d triangle_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  return (b - a).cross(c - a);
-}
-
 /// face_normal(f, g[, pm]): twice the vector area of f (see the header
 /// comment); zero for a degenerate face.
 inline constexpr struct Face_normal_fn {
