@@ -259,6 +259,17 @@ TYPED_TEST(Geometry, SameBitsAsHalfedgeMesh) {
   std::map<std::vector<std::size_t>, Vector3d> ref;
   for (const auto f : faces(r)) ref[face_key(r, f)] = genmesh::face_normal(f, r);
   for (const auto f : faces(g)) EXPECT_EQ(genmesh::face_normal(f, g), ref.at(face_key(g, f)));
+  // triangle_normal by vertex indices: face_normal's bits from whichever
+  // corner the caller starts (what simplification's fold-over test uses).
+  for (const auto f : faces(g)) {
+    auto h = halfedge(f, g);
+    for (int start = 0; start < 3; ++start, h = next(h, g)) {
+      const auto a = target(h, g), b = target(next(h, g), g), c = target(next(next(h, g), g), g);
+      EXPECT_EQ(genmesh::triangle_normal(vindex(g, a), genmesh::point(a, g), vindex(g, b), genmesh::point(b, g),
+                                         vindex(g, c), genmesh::point(c, g)),
+                genmesh::face_normal(f, g));
+    }
+  }
 }
 
 // Empty meshes and NaN coordinates: documented answers, no throw, no hang.

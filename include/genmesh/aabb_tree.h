@@ -127,6 +127,7 @@ public:
     std::array<Vertex, 3> corners;  ///< the (fan) triangle of that face it lies in
     Eigen::Vector3d barycentric;    ///< point = Σ barycentric[i] · position(corners[i])
     double squared_distance;
+    std::size_t triangle;           ///< that triangle's leaf-order index (triangle_points(triangle))
   };
 
   /// What first_hit() finds.
@@ -213,6 +214,7 @@ public:
       r.squared_distance = best_d;
       r.face = info_[best].face;
       r.corners = info_[best].corners;
+      r.triangle = best;
     }
     return r;
   }

@@ -78,6 +78,17 @@ inline Eigen::Vector3d triangle_normal(const Eigen::Vector3d& a, const Eigen::Ve
   return (b - a).cross(c - a);
 }
 
+/// triangle_normal(ia, a, ib, b, ic, c): the same normal of the triangle
+/// with corners a, b, c (in this cyclic order) of vertex indices ia, ib, ic,
+/// computed from the corner of lowest index, as face_normal does: the same
+/// bits whichever corner a caller starts from.
+inline Eigen::Vector3d triangle_normal(std::size_t ia, const Eigen::Vector3d& a, std::size_t ib,
+                                       const Eigen::Vector3d& b, std::size_t ic, const Eigen::Vector3d& c) {
+  if (ia < ib && ia < ic) return triangle_normal(a, b, c);
+  if (ib < ic) return triangle_normal(b, c, a);
+  return triangle_normal(c, a, b);
+}
+
 /// v / |v|, or zero when |v| is zero (a degenerate face has no direction).
 inline Eigen::Vector3d normalized_or_zero(const Eigen::Vector3d& v) {
   const double l = v.norm();
