@@ -1210,19 +1210,17 @@ TEST(SubdivisionNative, CreaseMapsLiveInTheMeshsPropertySystem) {
   auto h = mesh_of<genmesh_test::Halfedge_mesh>(genmesh::make_cube());
   auto i = mesh_of<genmesh_test::Incidence_mesh>(genmesh::make_cube());
   auto s = mesh_of<genmesh_test::Surface_mesh>(genmesh::make_cube());
-  const std::size_t he = h.property_names<genmesh::Edge_index>().size();
-  const std::size_t ie = i.property_names<genmesh::Edge_index>().size();
+  // anonymous properties are not named: their bytes show them
+  const std::size_t hb = h.memory_bytes(), ib = i.memory_bytes();
   const std::size_t se = s.properties<genmesh_test::Surface_mesh::Edge_index>().size();
-  const std::size_t hv = h.property_names<genmesh::Vertex_index>().size();
   {
     auto hc = genmesh::make_crease_map(h);
     auto ic = genmesh::make_crease_map(i);
     auto sc = genmesh::make_crease_map(s);
     auto hk = genmesh::make_corner_map(h);
-    EXPECT_EQ(h.property_names<genmesh::Edge_index>().size(), he + 1);
-    EXPECT_EQ(i.property_names<genmesh::Edge_index>().size(), ie + 1);
+    EXPECT_GE(h.memory_bytes(), hb + 12 * sizeof(double) + 8);
+    EXPECT_GE(i.memory_bytes(), ib + 12 * sizeof(double));
     EXPECT_EQ(s.properties<genmesh_test::Surface_mesh::Edge_index>().size(), se + 1);
-    EXPECT_EQ(h.property_names<genmesh::Vertex_index>().size(), hv + 1);
     for (auto e : edges(h)) put(hc, e, 2.0);
     genmesh::catmull_clark_subdivision(h, genmesh::Catmull_clark_options{.crease_map = hc, .corner_map = hk});
     std::size_t sharp = 0, other = 0; // the halves of the 12 old edges get 2 − 1, new edges 0
@@ -1235,10 +1233,8 @@ TEST(SubdivisionNative, CreaseMapsLiveInTheMeshsPropertySystem) {
     EXPECT_EQ(other, 0u);
     (void)ic, (void)sc;
   }
-  EXPECT_EQ(h.property_names<genmesh::Edge_index>().size(), he);
-  EXPECT_EQ(i.property_names<genmesh::Edge_index>().size(), ie);
+  EXPECT_EQ(i.memory_bytes(), ib);
   EXPECT_EQ(s.properties<genmesh_test::Surface_mesh::Edge_index>().size(), se);
-  EXPECT_EQ(h.property_names<genmesh::Vertex_index>().size(), hv);
 }
 
 } // namespace
