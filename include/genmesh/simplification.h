@@ -41,6 +41,7 @@
 //   collapse changes a vertex next to one of its ends (the test's inputs).
 #pragma once
 
+#include <genmesh/simplification/attribute_quadrics.h>
 #include <genmesh/simplification/lindstrom_turk.h>
 #include <genmesh/simplification/quadric.h>
 #include <genmesh/visitor.h>

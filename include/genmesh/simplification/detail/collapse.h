@@ -284,7 +284,11 @@ class Collapser {
       } else if (c < a && c < b) {
         std::tie(a, b, c) = std::make_tuple(c, a, b);
       }
-      const Data q = policy_.face(pos_[a], pos_[b], pos_[c]);
+      Data q;
+      if constexpr (requires { policy_.face(a, pos_[a], b, pos_[b], c, pos_[c]); })
+        q = policy_.face(a, pos_[a], b, pos_[b], c, pos_[c]); // a policy that reads attributes
+      else
+        q = policy_.face(pos_[a], pos_[b], pos_[c]);
       data_[a] = simplification::merge(policy_, data_[a], q);
       data_[b] = simplification::merge(policy_, data_[b], q);
       data_[c] = simplification::merge(policy_, data_[c], q);
@@ -776,6 +780,8 @@ class Collapser {
 
     if constexpr (!memoryless) data_[iq] = simplification::merge(policy_, data_[ip], data_[iq]);
     pos_[iq] = pl.position;
+    if constexpr (requires { policy_.collapsed(iq, data_[iq], pl.position); })
+      policy_.collapsed(iq, data_[iq], pl.position); // the survivor's attribute values
     faces_ -= static_cast<std::size_t>(top) + static_cast<std::size_t>(bottom);
     if constexpr (memoryless) ++epoch_;
     if (apexes > 0) merge_features(q, apex, merged, apexes);
