@@ -407,6 +407,17 @@ TYPED_TEST(Simplification, MinAngleAndMaxValence) {
   genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(soup);
   genmesh::simplify(ref, {.target_ratio = 0.05, .max_valence = 7});
   expect_same_soup(canonical_of(h), canonical_of(ref), "max_valence");
+  // .max_aspect_ratio: no face of the result above 2 (the input's worst is
+  // about 1.1); plane quadrics alone go above.
+  auto worst_aspect = [](const auto& m) {
+    return genmesh::triangle_quality(m).max_aspect_ratio;
+  };
+  ASSERT_LT(worst_aspect(mesh_of<TypeParam>(soup)), 2.0);
+  TypeParam k = mesh_of<TypeParam>(soup);
+  const auto rk = genmesh::simplify(k, {.target_ratio = 0.05, .max_aspect_ratio = 2.0});
+  EXPECT_EQ(rk.stop_reason, genmesh::Stop_reason::target_faces);
+  EXPECT_LE(worst_aspect(k), 2.0);
+  EXPECT_GT(worst_aspect(free_mesh), 2.0);
 }
 
 // Two concentric spheres 3% apart (the inner one facing inwards): coarse

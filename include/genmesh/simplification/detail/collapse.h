@@ -505,6 +505,11 @@ class Collapser {
             const double d = n0.dot(n1);
             if (!(d > 0) || d * d < cos_max_ * cos_max_ * l0 * l1) return false;
           }
+          if (o_.max_aspect_ratio > 0) {
+            // No face above .max_aspect_ratio, unless it was as bad before.
+            const double r1 = triangle_aspect_ratio(x, pos_[ia], pos_[ib]);
+            if (r1 > o_.max_aspect_ratio && r1 > triangle_aspect_ratio(pos_[iv], pos_[ia], pos_[ib])) return false;
+          }
           if (cos_min_angle_ < 1) {
             // No corner below .min_angle, unless the face was as bad before.
             const double c1 = largest_corner_cosine(x, pos_[ia], pos_[ib]);
