@@ -12,7 +12,7 @@
 // slower, self-intersection scans faster overall (docs/benchmarks.md).
 // Boxes are stored in float, rounded outward, so they stay conservative.
 // Large arrays use transparent huge pages where the system offers them
-// (detail/large_allocator.h): first-touch page faults were half the build.
+// (detail/memory/large_allocator.h): first-touch page faults were half the build.
 // The tree is a snapshot: it does not follow later edits of the mesh.
 //
 // Guarantees: closest_point returns a point of the nearest triangle, the
@@ -32,7 +32,7 @@
 #include <genmesh/exceptions.h>
 #include <genmesh/geometry.h>
 #include <genmesh/property_maps.h>
-#include <genmesh/detail/large_allocator.h>
+#include <genmesh/detail/memory/large_allocator.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -127,6 +127,7 @@ public:
     std::array<Vertex, 3> corners;  ///< the (fan) triangle of that face it lies in
     Eigen::Vector3d barycentric;    ///< point = Σ barycentric[i] · position(corners[i])
     double squared_distance;
+    std::size_t triangle;           ///< that triangle's leaf-order index (triangle_points(triangle))
   };
 
   /// What first_hit() finds.
@@ -213,6 +214,7 @@ public:
       r.squared_distance = best_d;
       r.face = info_[best].face;
       r.corners = info_[best].corners;
+      r.triangle = best;
     }
     return r;
   }

@@ -24,7 +24,7 @@
 #pragma once
 
 #include <genmesh/concepts.h>
-#include <genmesh/detail/triangle_intersection.h>
+#include <genmesh/detail/geometry/triangle_intersection.h>
 #include <genmesh/point_traits.h>
 #include <genmesh/property_maps.h>
 

@@ -29,11 +29,11 @@
 #pragma once
 
 #include <genmesh/concepts.h>
-#include <genmesh/detail/io_common.h>
-#include <genmesh/detail/io_obj.h>
-#include <genmesh/detail/io_off.h>
-#include <genmesh/detail/io_ply.h>
-#include <genmesh/detail/io_stl.h>
+#include <genmesh/detail/io/common.h>
+#include <genmesh/detail/io/obj.h>
+#include <genmesh/detail/io/off.h>
+#include <genmesh/detail/io/ply.h>
+#include <genmesh/detail/io/stl.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/polygon_soup.h>
 #include <genmesh/soup_to_mesh.h>

@@ -23,6 +23,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -71,20 +72,34 @@ public:
   Reference_surface& operator=(const Reference_surface&) = delete;
 
   /// The point of the surface nearest to q, given a point `on` of the
-  /// surface (it bounds the search: the nearest point is no farther).
-  Eigen::Vector3d project(const Eigen::Vector3d& q, const Eigen::Vector3d& on) const {
+  /// surface (it bounds the search: the nearest point is no farther) and
+  /// `triangle`, the (leaf-order) triangle of the previous answer or npos,
+  /// which bounds it tighter: a vertex moved tangentially is usually still
+  /// nearest to the triangle it was on. `triangle` is updated.
+  Eigen::Vector3d project(const Eigen::Vector3d& q, const Eigen::Vector3d& on, std::size_t& triangle) const {
     if (tree_->empty() || !q.allFinite()) return q;
-    const double d = (q - on).norm();
-    if (std::isfinite(d)) {
-      // A little slack: `on` is a computed point of a triangle, not exactly on it.
-      const double r = d * (1 + 1e-9) + slack_;
-      const auto c = tree_->closest_point(q, r * r);
-      // Nothing that near: face is null_face() (squared_distance then holds
-      // the bound, not infinity, whatever the tree's comment says).
-      if (c.face != boost::graph_traits<G>::null_face()) return snap(q, c);
+    double d2 = (q - on).squaredNorm();
+    if (triangle < tree_->triangle_count()) {
+      const auto& t = tree_->triangle_points(triangle);
+      d2 = std::min(d2, (closest_point_on_triangle(q, t[0], t[1], t[2]).point - q).squaredNorm());
     }
-    return snap(q, tree_->closest_point(q));
+    if (std::isfinite(d2)) {
+      // A little slack: `on` is a computed point of a triangle, not exactly on it.
+      const double r = std::sqrt(d2) * (1 + 1e-9) + slack_;
+      const auto c = tree_->closest_point(q, r * r);
+      // Nothing that near: face is null_face().
+      if (c.face != boost::graph_traits<G>::null_face()) {
+        triangle = c.triangle;
+        return snap(q, c);
+      }
+    }
+    const auto c = tree_->closest_point(q);
+    triangle = c.triangle;
+    return snap(q, c);
   }
+
+  /// No previous triangle.
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 
   bool empty() const { return tree_->empty(); }
 

@@ -25,6 +25,7 @@
 
 #include <genmesh/concepts.h>
 #include <genmesh/exceptions.h>
+#include <genmesh/geometry.h>
 #include <genmesh/local_operations.h>
 #include <genmesh/point_traits.h>
 #include <genmesh/property_maps.h>
@@ -39,6 +40,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -120,6 +122,7 @@ public:
   void build_reference() {
     ref_ = std::make_unique<Reference_surface<G>>(g_, o_.faces);
     on_.assign(index_bound(vertex_index, g_), Eigen::Vector3d::Zero());
+    on_triangle_.assign(on_.size(), Reference_surface<G>::npos);
     for (auto v : vertices(g_)) on_[vid(v)] = pt(v);
   }
 
@@ -164,7 +167,10 @@ public:
         const std::uint32_t i = eid(x);
         if (i != eid(h) && i != eid(*hnew)) eflag_[i] = 0;
       });
-      if (ref_) on_at(w) = on_at(u);
+      if (ref_) {
+        on_at(w) = on_at(u);
+        on_triangle_[vid(w)] = on_triangle_[vid(u)];
+      }
       if (!sizing_.empty()) sizing_[vid(w)] = 0.5 * (sizing_[vid(u)] + sizing_[vid(target(h, g_))]);
       // The edges at w and the far sides of its triangles (now perhaps
       // the longest of their triangles).
@@ -276,8 +282,23 @@ public:
   /// pmp-library's remove_caps, widened). Two passes.
   std::size_t remove_bad_triangles() {
     const double bad = std::cos(30.0 * std::numbers::pi / 180.0); // cos of the smallest angle we keep
+    // Each pass looks only at the edges of triangles with an angle below
+    // 30° (found without roots), in edge index order.
+    std::vector<std::pair<std::uint32_t, H>> marked;
     const std::size_t n = flip_passes(
         2,
+        [&](std::vector<H>& hs) {
+          hs.clear();
+          marked.clear();
+          for (auto f : faces(g_)) {
+            const H h0 = halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
+            if (!has_angle_below_30(pt(target(h0, g_)), pt(target(h1, g_)), pt(target(h2, g_)))) continue;
+            for (const H x : {h0, h1, h2}) marked.emplace_back(eid(x), canonical(x));
+          }
+          std::sort(marked.begin(), marked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+          for (std::size_t i = 0; i < marked.size(); ++i)
+            if (i == 0 || marked[i].first != marked[i - 1].first) hs.push_back(marked[i].second);
+        },
         [&](H h) {
           const auto [before, after] = flip_max_cos(h);
           return before > bad && after < before - 1e-9;
@@ -287,6 +308,15 @@ public:
     return n;
   }
 
+  /// Whether triangle (a, b, c) has an angle below 30°: cos² > 3/4 at an
+  /// acute corner, compared without roots.
+  static bool has_angle_below_30(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+    const Eigen::Vector3d ab = b - a, bc = c - b, ca = a - c;
+    const double lab = ab.squaredNorm(), lbc = bc.squaredNorm(), lca = ca.squaredNorm();
+    auto small = [](double d, double l1, double l2) { return d > 0 && d * d > 0.75 * l1 * l2; };
+    return small(-ab.dot(ca), lab, lca) || small(-ab.dot(bc), lab, lbc) || small(-bc.dot(ca), lbc, lca);
+  }
+
   /// The one flip loop of the flip steps: passes over the edges (in
   /// edges(g) order) flipping every free inner edge h for which want(h)
   /// holds, the flip keeps both triangles' orientation and can_flip_edge
@@ -294,10 +324,24 @@ public:
   /// a pass without flips or after max_passes passes. Returns the flips.
   template <class Want, class After>
   std::size_t flip_passes(int max_passes, Want&& want, After&& after) {
+    bool listed = false;
+    return flip_passes(
+        max_passes,
+        [&](std::vector<H>& hs) {
+          if (listed) return;
+          for (auto e : edges(g_)) hs.push_back(halfedge(e, g_));
+          listed = true;
+        },
+        want, after);
+  }
+
+  /// As above, over the halfedges candidates(hs) puts into hs before each pass.
+  template <class Candidates, class Want, class After>
+  std::size_t flip_passes(int max_passes, Candidates&& candidates, Want&& want, After&& after) {
     std::vector<H> hs;
-    for (auto e : edges(g_)) hs.push_back(halfedge(e, g_));
     std::size_t n = 0;
     for (int pass = 0; pass < max_passes; ++pass) {
+      candidates(hs);
       std::size_t flipped = 0;
       for (const H h : hs) {
         if (!free_inner(h) || !want(h)) continue;
@@ -381,42 +425,64 @@ public:
     for (int step = 0; step < o_.smoothing_steps; ++step) {
       for (std::size_t i = 0; i < free.size(); ++i) {
         const Eigen::Vector3d p = pos[free_id[i]];
-        Eigen::Vector3d normal = Eigen::Vector3d::Zero(), sum = Eigen::Vector3d::Zero();
-        double weight = 0;
-        const std::uint32_t b = offset[i], e = offset[i + 1], k = e - b;
-        for (std::uint32_t j = 0; j < k; ++j) {
-          // Inner vertex: ring[j] = a, the next one b; face (a, v, b).
-          const Eigen::Vector3d& a = pos[ring[b + j]];
-          const Eigen::Vector3d& c = pos[ring[b + (j + 1 == k ? 0 : j + 1)]];
-          const Eigen::Vector3d n = (c - p).cross(a - p);
-          normal += n;
-          if (uniform) {
-            sum += a;
-            weight += 1;
-          } else {
-            const double area = n.norm();
-            sum += area * (a + c + p);
-            weight += 3 * area;
-          }
-        }
-        Eigen::Vector3d u = weight > 0 ? Eigen::Vector3d(sum / weight - p) : Eigen::Vector3d::Zero();
+        const std::uint32_t b = offset[i], k = offset[i + 1] - b;
+        const std::uint32_t* r = ring.data() + b;
+        // Inner vertex: the ring is closed, face j is (r[j], v, r[j + 1]).
+        Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+        for (std::uint32_t j = 0; j < k; ++j)
+          normal += triangle_normal(p, pos[r[j + 1 == k ? 0 : j + 1]], pos[r[j]]);
+        Eigen::Vector3d u = Eigen::Vector3d::Zero();
+        bool solved = false;
         if (squared_areas) {
           // The point minimizing the sum of the squared areas of v's
-          // triangles (pmp-library's rule), if the system is well posed.
-          Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+          // triangles (pmp-library's rule): A x = rhs with
+          // A = Σ w (|d|² I − d dᵀ), rhs = Σ w (|d|² a − d (d·a)), d = c − a,
+          // w = 1/|d|; A symmetric, solved by its adjugate.
+          double s = 0, m00 = 0, m01 = 0, m02 = 0, m11 = 0, m12 = 0, m22 = 0;
           Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
           for (std::uint32_t j = 0; j < k; ++j) {
-            const Eigen::Vector3d& a = pos[ring[b + j]];
-            const Eigen::Vector3d d = pos[ring[b + (j + 1 == k ? 0 : j + 1)]] - a;
+            const Eigen::Vector3d& a = pos[r[j]];
+            const Eigen::Vector3d d = pos[r[j + 1 == k ? 0 : j + 1]] - a;
             const double l2 = d.squaredNorm();
             if (!(l2 > 0)) continue;
-            const Eigen::Matrix3d D = l2 * Eigen::Matrix3d::Identity() - d * d.transpose();
-            const double w = 1.0 / std::sqrt(l2);
-            A += w * D;
-            rhs += w * (D * a);
+            const double l = std::sqrt(l2), w = 1.0 / l;
+            s += l;
+            const Eigen::Vector3d wd = w * d;
+            m00 += wd.x() * d.x(), m01 += wd.x() * d.y(), m02 += wd.x() * d.z();
+            m11 += wd.y() * d.y(), m12 += wd.y() * d.z(), m22 += wd.z() * d.z();
+            rhs += l * a - wd * d.dot(a);
           }
-          const double det = A.determinant(), scale = A.norm();
-          if (std::abs(det) > 1e-12 * scale * scale * scale) u = A.inverse() * rhs - p;
+          const double a00 = s - m00, a11 = s - m11, a22 = s - m22, a01 = -m01, a02 = -m02, a12 = -m12;
+          const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
+          const double det = a00 * c00 + a01 * c01 + a02 * c02;
+          const double scale2 = a00 * a00 + a11 * a11 + a22 * a22 + 2 * (a01 * a01 + a02 * a02 + a12 * a12);
+          if (std::abs(det) > 1e-12 * scale2 * std::sqrt(scale2)) {
+            const double c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
+            const Eigen::Vector3d x(c00 * rhs.x() + c01 * rhs.y() + c02 * rhs.z(),
+                                    c01 * rhs.x() + c11 * rhs.y() + c12 * rhs.z(),
+                                    c02 * rhs.x() + c12 * rhs.y() + c22 * rhs.z());
+            u = x / det - p;
+            solved = true;
+          }
+        }
+        if (!solved) {
+          // Uniform: the mean of the neighbours; area-weighted fallback
+          // (singular system): the area-weighted centroid of v's triangles.
+          Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+          double weight = 0;
+          for (std::uint32_t j = 0; j < k; ++j) {
+            const Eigen::Vector3d& a = pos[r[j]];
+            if (uniform) {
+              sum += a;
+              weight += 1;
+            } else {
+              const Eigen::Vector3d& c = pos[r[j + 1 == k ? 0 : j + 1]];
+              const double area = triangle_normal(p, c, a).norm();
+              sum += area * (a + c + p);
+              weight += 3 * area;
+            }
+          }
+          if (weight > 0) u = sum / weight - p;
         }
         const double nn = normal.squaredNorm();
         if (nn > 0) u -= normal * (u.dot(normal) / nn);
@@ -436,7 +502,7 @@ public:
     for (auto v : vertices(g_)) {
       if (vflag_at(v) & v_fixed) continue;
       Eigen::Vector3d& on = on_at(v);
-      on = ref_->project(pt(v), on);
+      on = ref_->project(pt(v), on, on_triangle_[vid(v)]);
       set_pt(v, on);
     }
   }
@@ -470,6 +536,7 @@ private:
     const std::size_t vb = index_bound(vertex_index, g_), eb = index_bound(edge_index, g_);
     if (vflag_.size() < vb) vflag_.resize(vb, 0);
     if (!on_.empty() && on_.size() < vb) on_.resize(vb, Eigen::Vector3d::Zero());
+    if (!on_.empty() && on_triangle_.size() < vb) on_triangle_.resize(vb, Reference_surface<G>::npos);
     if (!sizing_.empty() && sizing_.size() < vb) sizing_.resize(vb, L_);
     if (eflag_.size() < eb) eflag_.resize(eb, 0);
   }
@@ -831,6 +898,7 @@ private:
   double L_ = 0, hi2_ = 0, lo2_ = 0;
   std::vector<std::uint8_t> vflag_, eflag_;
   std::vector<Eigen::Vector3d> on_; // each vertex's last point on the reference surface
+  std::vector<std::size_t> on_triangle_; // and the reference triangle it lies in (npos: unknown)
   std::vector<double> sizing_;
   std::unique_ptr<Reference_surface<G>> ref_;
   Remeshing_result result_;

@@ -1,4 +1,4 @@
-// genmesh/detail/io_stl.h — STL reader and writer (ASCII and binary).
+// genmesh/detail/io/stl.h — STL reader and writer (ASCII and binary).
 //
 // STL stores each facet with its own copies of its corners. The reader welds
 // them: corners with exactly equal coordinates become one point (points
@@ -16,7 +16,7 @@
 // stores single-precision floats.
 #pragma once
 
-#include <genmesh/detail/io_common.h>
+#include <genmesh/detail/io/common.h>
 #include <genmesh/geometry.h>
 
 #include <unordered_map>
