@@ -284,6 +284,19 @@ void meshopt_row(benchmark::State& state, Input in, double ratio) {
 }
 #endif
 
+// One row: run once, timed by hand (CPU time of the algorithm).
+template <class Fn>
+void register_row(const std::string& name, Fn fn) {
+  benchmark::RegisterBenchmark(name.c_str(),
+                               [name, fn](benchmark::State& s) {
+                                 current_row = name;
+                                 fn(s);
+                               })
+      ->Unit(benchmark::kMillisecond)
+      ->UseManualTime()
+      ->Iterations(1);
+}
+
 void register_all() {
   struct Case {
     const char* name;
@@ -294,15 +307,7 @@ void register_all() {
                        Case{"armadillo832k_to1pc", Input::armadillo_loop2, 0.01},
                        Case{"shark_to10pc", Input::shark, 0.1}}) {
     auto reg = [&](const std::string& row, auto fn) {
-      const std::string name = "Simplification/" + std::string(c.name) + "/" + row;
-      benchmark::RegisterBenchmark(name.c_str(),
-                                   [name, fn](benchmark::State& s) {
-                                     current_row = name;
-                                     fn(s);
-                                   })
-          ->Unit(benchmark::kMillisecond)
-          ->UseManualTime()
-          ->Iterations(1);
+      register_row("Simplification/" + std::string(c.name) + "/" + row, fn);
     };
     const Input in = c.in;
     const double r = c.ratio;
@@ -336,15 +341,7 @@ void register_curve() {
     auto reg = [&](const std::string& row, auto fn) {
       char ratio[32];
       std::snprintf(ratio, sizeof ratio, "%g", r);
-      const std::string name = "SimplificationCurve/" + std::string(ratio) + "/" + row;
-      benchmark::RegisterBenchmark(name.c_str(),
-                                   [name, fn](benchmark::State& s) {
-                                     current_row = name;
-                                     fn(s);
-                                   })
-          ->Unit(benchmark::kMillisecond)
-          ->UseManualTime()
-          ->Iterations(1);
+      register_row("SimplificationCurve/" + std::string(ratio) + "/" + row, fn);
     };
     reg("genmesh", [=](benchmark::State& s) { genmesh_row<Halfedge_mesh>(s, Input::armadillo, r); });
     reg("CGAL_GH_plane", [=](benchmark::State& s) {
