@@ -13,6 +13,8 @@
 #include <genmesh/adaptors/openmesh.h>
 #include <genmesh/concepts.h>
 #include <genmesh/generators.h>
+#include <genmesh/remeshing.h>
+#include <genmesh/simplification.h>
 #include <genmesh/subdivision.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -1004,6 +1006,50 @@ TEST(CgalToGenmesh, EverySchemeOnPolyhedronAndOpenMeshEqualsHalfedgeMesh) {
         EXPECT_EQ(subdivided<Om_tri_d>(in.soup, s, 2), expected);
       }
     }
+  }
+}
+
+// Simplification and isotropic remeshing run on Polyhedron_3 (with ids) and
+// OpenMesh's TriMesh through the same generic code (their local operations
+// and the generic scratch properties) and give Halfedge_mesh's mesh.
+template <class G>
+Canonical_soup simplified(const genmesh::Polygon_soup& soup, double ratio) {
+  G g;
+  genmesh::build_mesh(soup, g);
+  const auto r = genmesh::simplify(g, {.target_ratio = ratio});
+  EXPECT_GT(r.collapses, 0u);
+  EXPECT_TRUE(genmesh::check_mesh(g).valid);
+  return canonical_soup(g);
+}
+
+template <class G>
+Canonical_soup remeshed(const genmesh::Polygon_soup& soup) {
+  G g;
+  genmesh::build_mesh(soup, g);
+  const auto r = genmesh::isotropic_remeshing(g, {.relative_edge_length = 0.8, .iterations = 3});
+  EXPECT_GT(r.splits, 0u);
+  EXPECT_TRUE(genmesh::check_mesh(g).valid);
+  return canonical_soup(g);
+}
+
+TEST(CgalToGenmesh, SimplifyAndRemeshOnPolyhedronAndOpenMeshEqualHalfedgeMesh) {
+  genmesh::Polygon_soup bumpy = genmesh::make_grid_with_hole(12);
+  for (auto& p : bumpy.points) p.z() = 0.2 * std::sin(3 * p.x()) * std::cos(2 * p.y());
+  const std::pair<const char*, genmesh::Polygon_soup> inputs[] = {
+      {"icosphere(3)", genmesh::make_icosphere(3)},
+      {"bumpy grid with a hole", bumpy},
+      {"torus", genmesh::make_torus(24, 12, true)}};
+  for (const auto& [name, soup] : inputs) {
+    SCOPED_TRACE(name);
+    ASSERT_TRUE(all_triangles(soup));
+    const Canonical_soup s = simplified<genmesh::Halfedge_mesh<>>(soup, 0.3);
+    EXPECT_LT(s.faces.size(), soup.num_faces());
+    EXPECT_EQ(simplified<Polyhedron_with_ids>(soup, 0.3), s);
+    EXPECT_EQ(simplified<Om_tri_d>(soup, 0.3), s);
+    const Canonical_soup r = remeshed<genmesh::Halfedge_mesh<>>(soup);
+    EXPECT_FALSE(r.faces.empty());
+    EXPECT_EQ(remeshed<Polyhedron_with_ids>(soup), r);
+    EXPECT_EQ(remeshed<Om_tri_d>(soup), r);
   }
 }
 

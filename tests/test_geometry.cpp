@@ -129,8 +129,9 @@ TYPED_TEST(Geometry, VertexNormalsCloseToCgal) {
     const auto h0 = halfedge(v, g);
     auto h = h0;
     do {
-      if (face(h, g) != boost::graph_traits<TypeParam>::null_face())
+      if (face(h, g) != boost::graph_traits<TypeParam>::null_face()) {
         EXPECT_GT(ours.dot(genmesh::unit_face_normal(face(h, g), g)), -0.5);
+      }
       h = opposite(next(h, g), g);
     } while (h != h0);
   }
@@ -156,7 +157,7 @@ TYPED_TEST(Geometry, SharpEdgesEqualCgal) {
       for (const auto e : edges(g))
         if (get(m, e)) ours.insert(edge_key(g, halfedge(e, g)));
       EXPECT_EQ(ours, cgal);
-      if (angle == 30.0 && std::string(name) == "fandisk.off") EXPECT_GT(ours.size(), 100u);
+      if (angle == 30.0 && std::string(name) == "fandisk.off") { EXPECT_GT(ours.size(), 100u); }
     }
   }
 }
@@ -218,7 +219,7 @@ TYPED_TEST(Geometry, HandMadeValues) {
   EXPECT_TRUE(genmesh::face_normal(f, q).isApprox(Vector3d(0, 0, 4)));
   EXPECT_TRUE(genmesh::face_centroid(f, q).isApprox(Vector3d(1, 0.5, 0)));
   for (const auto h : halfedges(q))
-    if (face(h, q) == f) EXPECT_NEAR(genmesh::corner_angle(h, q), std::numbers::pi / 2, 1e-15);
+    if (face(h, q) == f) { EXPECT_NEAR(genmesh::corner_angle(h, q), std::numbers::pi / 2, 1e-15); }
   EXPECT_DOUBLE_EQ(genmesh::mean_edge_length(q), 1.5);
   EXPECT_DOUBLE_EQ(genmesh::diagonal(q), std::sqrt(5.0));
   EXPECT_EQ(genmesh::volume(q), 0.0);
@@ -287,6 +288,17 @@ TYPED_TEST(Geometry, SameBitsAsHalfedgeMesh) {
   std::map<std::vector<std::size_t>, Vector3d> ref;
   for (const auto f : faces(r)) ref[face_key(r, f)] = genmesh::face_normal(f, r);
   for (const auto f : faces(g)) EXPECT_EQ(genmesh::face_normal(f, g), ref.at(face_key(g, f)));
+  // triangle_normal by vertex indices: face_normal's bits from whichever
+  // corner the caller starts (what simplification's fold-over test uses).
+  for (const auto f : faces(g)) {
+    auto h = halfedge(f, g);
+    for (int start = 0; start < 3; ++start, h = next(h, g)) {
+      const auto a = target(h, g), b = target(next(h, g), g), c = target(next(next(h, g), g), g);
+      EXPECT_EQ(genmesh::triangle_normal(vindex(g, a), genmesh::point(a, g), vindex(g, b), genmesh::point(b, g),
+                                         vindex(g, c), genmesh::point(c, g)),
+                genmesh::face_normal(f, g));
+    }
+  }
 }
 
 // Empty meshes and NaN coordinates: documented answers, no throw, no hang.
@@ -358,7 +370,7 @@ TEST(TriangleIntersection, EqualsCgalOnDegenerateRichInput) {
 
 // Two faces of one mesh:     touching at a vertex or along an edge is not an
 //     c                      intersection; overlapping beyond it is.
-//    / \       
+//    / \   (a–b: the shared edge)
 //   a───b───e
 //    \ /
 //     d
@@ -619,8 +631,8 @@ TYPED_TEST(Measures, SelfIntersectionsEqualCgal) {
     EXPECT_EQ(ours.size(), cgal.size());
     EXPECT_EQ(genmesh::does_self_intersect(g), PMP::does_self_intersect(sm));
     intersecting_cases += !ours.empty();
-    if (name.starts_with("pierced")) EXPECT_FALSE(ours.empty());
-    if (name == "elephant.off") EXPECT_TRUE(ours.empty());
+    if (name.starts_with("pierced")) { EXPECT_FALSE(ours.empty()); }
+    if (name == "elephant.off") { EXPECT_TRUE(ours.empty()); }
   }
   EXPECT_GE(intersecting_cases, 3u);
 }
@@ -654,7 +666,7 @@ TYPED_TEST(Measures, HandMadeSelfIntersections) {
   Polygon_soup fan;
   fan.add_point({0, 0, 0});
   for (int i = 0; i < 4; ++i) fan.add_point({std::cos(i * 1.5), std::sin(i * 1.5), 0.3});
-  for (int i = 0; i < 3; ++i) fan.add_face({0, i + 1, i + 2});
+  for (unsigned i = 0; i < 3; ++i) fan.add_face({0, i + 1, i + 2});
   EXPECT_TRUE(pairs_of(fan).empty());
   fan.add_point({0.4, 0.2, -1});
   fan.add_point({0.4, 0.2, 1});
@@ -747,7 +759,7 @@ TYPED_TEST(Measures, QualityByHand) {
     for (int i = 0; i <= n; ++i) grid.add_point({double(i), double(j), 0});
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+      const unsigned a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
       grid.add_face({a, b, c});
       grid.add_face({a, c, d});
     }

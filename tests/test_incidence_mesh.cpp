@@ -3,6 +3,7 @@
 #include "backends.h"
 
 #include <genmesh/generators.h>
+#include <genmesh/halfedge_mesh.h>
 #include <genmesh/incidence_mesh.h>
 #include <genmesh/io.h>
 #include <genmesh/local_operations.h>

@@ -12,7 +12,7 @@
 // slower, self-intersection scans faster overall (docs/benchmarks.md).
 // Boxes are stored in float, rounded outward, so they stay conservative.
 // Large arrays use transparent huge pages where the system offers them
-// (detail/large_allocator.h): first-touch page faults were half the build.
+// (detail/memory/large_allocator.h): first-touch page faults were half the build.
 // The tree is a snapshot: it does not follow later edits of the mesh.
 //
 // Guarantees: closest_point returns a point of the nearest triangle, the
@@ -32,7 +32,7 @@
 #include <genmesh/exceptions.h>
 #include <genmesh/geometry.h>
 #include <genmesh/property_maps.h>
-#include <genmesh/detail/large_allocator.h>
+#include <genmesh/detail/memory/large_allocator.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

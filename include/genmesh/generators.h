@@ -7,6 +7,7 @@
 #pragma once
 
 #include <genmesh/exceptions.h>
+#include <genmesh/geometry.h>
 #include <genmesh/polygon_soup.h>
 
 #include <Eigen/Geometry>
@@ -26,16 +27,11 @@ namespace detail {
 // Reverse face f when its normal points towards `inside`.
 inline void orient_away_from(Polygon_soup& s, std::size_t f, const Eigen::Vector3d& inside) {
   auto c = s.face(f);
+  std::vector<Eigen::Vector3d> corners;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    const Eigen::Vector3d& p = s.points[c[i]];
-    const Eigen::Vector3d& q = s.points[c[(i + 1) % c.size()]];
-    centroid += p;
-    normal += p.cross(q);  // Newell's normal
-  }
+  for (auto i : c) corners.push_back(s.points[i]), centroid += s.points[i];
   centroid /= static_cast<double>(c.size());
-  if (normal.dot(centroid - inside) < 0) std::reverse(c.begin(), c.end());
+  if (polygon_normal(corners).dot(centroid - inside) < 0) std::reverse(c.begin(), c.end());
 }
 
 } // namespace detail

@@ -24,7 +24,7 @@
 #pragma once
 
 #include <genmesh/concepts.h>
-#include <genmesh/detail/triangle_intersection.h>
+#include <genmesh/detail/geometry/triangle_intersection.h>
 #include <genmesh/point_traits.h>
 #include <genmesh/property_maps.h>
 
@@ -40,6 +40,7 @@
 #include <cstddef>
 #include <limits>
 #include <numbers>
+#include <span>
 
 namespace genmesh {
 
@@ -90,6 +91,42 @@ halfedge_descriptor_t<G> canonical_halfedge_into(vertex_descriptor_t<G> v, const
 
 } // namespace detail::geom
 
+// On points: the primitives the mesh functions below, the readers and
+// writers (STL facet normals) and the algorithms share.
+
+/// (b − a) × (c − a): twice the vector area of triangle abc, directed by
+/// its orientation.
+inline Eigen::Vector3d triangle_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                       const Eigen::Vector3d& c) {
+  return (b - a).cross(c - a);
+}
+
+/// triangle_normal(ia, a, ib, b, ic, c): the same normal of the triangle
+/// with corners a, b, c (in this cyclic order) of vertex indices ia, ib, ic,
+/// computed from the corner of lowest index, as face_normal does: the same
+/// bits whichever corner a caller starts from.
+inline Eigen::Vector3d triangle_normal(std::size_t ia, const Eigen::Vector3d& a, std::size_t ib,
+                                       const Eigen::Vector3d& b, std::size_t ic, const Eigen::Vector3d& c) {
+  if (ia < ib && ia < ic) return triangle_normal(a, b, c);
+  if (ib < ic) return triangle_normal(b, c, a);
+  return triangle_normal(c, a, b);
+}
+
+/// v / |v|, or zero when |v| is zero (a degenerate face has no direction).
+inline Eigen::Vector3d normalized_or_zero(const Eigen::Vector3d& v) {
+  const double l = v.norm();
+  return l > 0 ? Eigen::Vector3d(v / l) : Eigen::Vector3d::Zero();
+}
+
+/// Twice the vector area of the polygon with these corners, as a fan from
+/// corners[0] (so it equals face_normal when corners[0] is the face's
+/// canonical corner); zero for fewer than three corners.
+inline Eigen::Vector3d polygon_normal(std::span<const Eigen::Vector3d> corners) {
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (std::size_t k = 1; k + 1 < corners.size(); ++k) n += triangle_normal(corners[0], corners[k], corners[k + 1]);
+  return n;
+}
+
 // Every function below is a function object (as the local operations are),
 // so argument-dependent lookup never finds it: CGAL's unqualified calls such
 // as edge_length(h, g, np) on a genmesh mesh stay CGAL's.
@@ -112,13 +149,6 @@ inline constexpr struct Point_fn {
     return (*this)(v, g, get(vertex_point, g));
   }
 } point{};
-
-/// triangle_normal(a, b, c): (b − a) × (c − a), twice the vector area of the
-/// triangle (a, b, c), pointing where (a, b, c) turns counter-clockwise; zero
-/// for a degenerate triangle.
-inline Eigen::Vector3d triangle_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  return (b - a).cross(c - a);
-}
 
 /// face_normal(f, g[, pm]): twice the vector area of f (see the header
 /// comment); zero for a degenerate face.
@@ -147,9 +177,7 @@ inline constexpr struct Face_normal_fn {
 inline constexpr struct Unit_face_normal_fn {
   template <FaceGraph G, PointMapOf<G> PointMap>
   Eigen::Vector3d operator()(face_descriptor_t<G> f, const G& g, const PointMap& pm) const {
-    const Eigen::Vector3d n = face_normal(f, g, pm);
-    const double l = n.norm();
-    return l > 0 ? Eigen::Vector3d(n / l) : Eigen::Vector3d::Zero();
+    return normalized_or_zero(face_normal(f, g, pm));
   }
   template <FaceGraph G>
   Eigen::Vector3d operator()(face_descriptor_t<G> f, const G& g) const {

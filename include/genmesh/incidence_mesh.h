@@ -30,7 +30,7 @@
 //   LIFO free list per element kind, adding reuses the most recently freed
 //   index (recycling on), else appends; iteration by increasing index.
 // - build_mesh(soup, g) (through genmesh_native_link_soup) and every local
-//   operation (genmesh_native_<op> in <genmesh/detail/incidence_operations.h>)
+//   operation (genmesh_native_<op> in <genmesh/detail/incidence/operations.h>)
 //   create and remove elements in the same order, with the same edge
 //   directions and returned descriptors, as on Halfedge_mesh: the same
 //   operation sequence gives the same to_soup() and the same edge numbering.
@@ -56,7 +56,7 @@
 // - A face must not visit a vertex twice (the loaders refuse such faces; the
 //   native operations refuse where the generic ones would make one, and where
 //   they would pinch a vertex into two border gaps: see
-//   detail/incidence_operations.h).
+//   detail/incidence/operations.h).
 // - next() reads h's turn record, one d1ᵀ column and one d1 column: O(1);
 //   faces edited by the low-level calls below since the last
 //   update_face_orders() fall back to scanning d0 rows (O(d) per next), and
@@ -73,8 +73,10 @@
 #pragma once
 
 #include <genmesh/concepts.h>
+#include <genmesh/detail/elements/compaction.h>
+#include <genmesh/detail/elements/mesh_functions.h>
+#include <genmesh/elements.h>
 #include <genmesh/exceptions.h>
-#include <genmesh/halfedge_mesh.h>
 #include <genmesh/mesh_properties.h>
 #include <genmesh/point_traits.h>
 #include <genmesh/polygon_soup.h>
@@ -1094,7 +1096,7 @@ public:
   /// Garbage_order: stable by default, or exactly as
   /// CGAL::Surface_mesh::collect_garbage() does), rebuilding the matrices
   /// compacted; returns the old -> new maps (identity if there was no
-  /// garbage). Defined in <genmesh/detail/incidence_garbage.h>.
+  /// garbage). Defined in <genmesh/detail/incidence/garbage.h>.
   Garbage_collection_maps collect_garbage(Garbage_order order = Garbage_order::stable);
 
   /// Capacity for nv vertices, ne edges and nf faces.
@@ -1591,7 +1593,7 @@ struct graph_traits<const genmesh::Incidence_mesh<P>> : graph_traits<genmesh::In
 
 namespace genmesh {
 
-// What only Incidence_mesh has; the rest: <genmesh/detail/mesh_functions.h>.
+// What only Incidence_mesh has; the rest: <genmesh/detail/elements/mesh_functions.h>.
 
 /// A new edge with no ends yet (set them with g.set_edge_vertices(e, u, v)).
 template <class P>
@@ -1650,5 +1652,5 @@ static_assert(detail::Has_native_link_soup<Incidence_mesh<>> && detail::Soup_bui
 
 } // namespace genmesh
 
-#include <genmesh/detail/incidence_garbage.h>
-#include <genmesh/detail/incidence_operations.h>
+#include <genmesh/detail/incidence/garbage.h>
+#include <genmesh/detail/incidence/operations.h>

@@ -29,11 +29,11 @@
 #pragma once
 
 #include <genmesh/concepts.h>
-#include <genmesh/detail/io_common.h>
-#include <genmesh/detail/io_obj.h>
-#include <genmesh/detail/io_off.h>
-#include <genmesh/detail/io_ply.h>
-#include <genmesh/detail/io_stl.h>
+#include <genmesh/detail/io/common.h>
+#include <genmesh/detail/io/obj.h>
+#include <genmesh/detail/io/off.h>
+#include <genmesh/detail/io/ply.h>
+#include <genmesh/detail/io/stl.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/polygon_soup.h>
 #include <genmesh/soup_to_mesh.h>
@@ -153,6 +153,8 @@ template <class Source>
 void write_source(const std::filesystem::path& path, const Source& source, const Write_options& options) {
   File_format format = options.format;
   if (format == File_format::automatic) format = format_from_extension(path);
+  if (std::error_code ec; std::filesystem::is_directory(path, ec))
+    throw io_error(path.string(), "cannot write: it is a directory");
   if (format == File_format::automatic)
     throw io_error(path.string(), "unknown format: the extension " + quote(path.extension().string()) +
                                       " is not .off, .obj, .ply or .stl");

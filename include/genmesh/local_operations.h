@@ -72,7 +72,7 @@
 #pragma once
 
 #include <genmesh/concepts.h>
-#include <genmesh/detail/local_operations_primitives.h>
+#include <genmesh/detail/local_operations/primitives.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/point_traits.h>
 #include <genmesh/property_maps.h>

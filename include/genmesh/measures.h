@@ -58,7 +58,7 @@ struct Hausdorff_options {
   /// The random sequence (std::mt19937_64) behind the face samples.
   std::uint64_t seed = 0;
   /// Called now and then with (samples done, samples in all); may be empty.
-  std::function<void(std::size_t, std::size_t)> progress;
+  std::function<void(std::size_t, std::size_t)> progress = {};
 };
 
 /// Distances from the samples of one surface to another.
@@ -117,7 +117,7 @@ Distance_result sample_distances(const G& a, const PointMap& pm, const Tree& tre
     Eigen::Vector3d pp = point(target(h, a), a, pm);
     for (h = next(h, a); h != h0; h = next(h, a)) {
       const Eigen::Vector3d pc = point(target(h, a), a, pm);
-      const double ar = 0.5 * (pp - p0).cross(pc - p0).norm();
+      const double ar = 0.5 * triangle_normal(p0, pp, pc).norm();
       tris.push_back({{p0, pp, pc}, ar});
       total += ar;
       pp = pc;
@@ -339,7 +339,7 @@ inline constexpr struct Triangle_quality_fn {
         const Eigen::Vector3d a = point(target(h0, g), g, pm), b = point(target(next(h0, g), g), g, pm),
                               c = point(source(h0, g), g, pm);
         const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
-        const double area = 0.5 * (b - a).cross(c - a).norm();
+        const double area = 0.5 * triangle_normal(a, b, c).norm();
         if (area > 0) {
           // R = abc / (4 area), r = 2 area / (a + b + c).
           const double ratio = (la * lb * lc / (4 * area)) / (2 * (2 * area / (la + lb + lc)));

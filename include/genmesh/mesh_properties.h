@@ -1,7 +1,7 @@
 // genmesh/mesh_properties.h — typed dynamic properties of genmesh's own meshes.
 //
 // Halfedge_mesh and Incidence_mesh both derive from Mesh_properties: one
-// Property_container (detail/property_array.h) per element kind, with the
+// Property_container (detail/properties/property_array.h) per element kind, with the
 // same API on both meshes:
 //
 //   auto w = mesh.add_property<Edge_index, double>("e:weight", 1.0);  // or add_edge_property<double>
@@ -20,7 +20,8 @@
 // removed; after a copy, look the property up by name in the copy.
 #pragma once
 
-#include <genmesh/detail/property_array.h>
+#include <genmesh/detail/properties/property_array.h>
+#include <genmesh/elements.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/property_maps.h>
 
@@ -291,5 +292,25 @@ template <class V, class H, class E, class F, class T>
 Shared_property<F, T> genmesh_native_scratch_property(face_index_t, Mesh_properties<V, H, E, F>& m, const T& init) {
   return Shared_property<F, T>(m, init);
 }
+
+/// Property handles: boost lvalue property maps indexed by element.
+template <class T>
+using Vertex_property = detail::Property_map<Vertex_index, T>;
+template <class T>
+using Halfedge_property = detail::Property_map<Halfedge_index, T>;
+template <class T>
+using Edge_property = detail::Property_map<Edge_index, T>;
+template <class T>
+using Face_property = detail::Property_map<Face_index, T>;
+
+/// Anonymous RAII properties of genmesh's meshes, by element kind.
+template <class T>
+using Scoped_vertex_property = Scoped_property<Vertex_index, T>;
+template <class T>
+using Scoped_halfedge_property = Scoped_property<Halfedge_index, T>;
+template <class T>
+using Scoped_edge_property = Scoped_property<Edge_index, T>;
+template <class T>
+using Scoped_face_property = Scoped_property<Face_index, T>;
 
 } // namespace genmesh

@@ -55,4 +55,16 @@ P from_eigen(const Eigen::Vector3d& v) {
   return Point_traits<P>::make(v.x(), v.y(), v.z());
 }
 
+namespace detail {
+/// The origin for a 3D point type, a value-initialized P otherwise: the
+/// position of a vertex added without one.
+template <class P>
+P default_point() {
+  if constexpr (Point3<P>)
+    return Point_traits<P>::make(0.0, 0.0, 0.0);
+  else
+    return P{};
+}
+} // namespace detail
+
 } // namespace genmesh

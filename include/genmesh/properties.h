@@ -36,7 +36,7 @@
 // collect_garbage of the algorithm. The graph must outlive every copy.
 #pragma once
 
-#include <genmesh/detail/property_array.h>
+#include <genmesh/detail/properties/property_array.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/property_maps.h>
 

@@ -32,7 +32,10 @@
 #include <genmesh/point_traits.h>
 #include <genmesh/polygon_soup.h>
 #include <genmesh/property_maps.h>
-#include <genmesh/validity.h>
+#include <genmesh/detail/validity/dense_index.h>
+#include <genmesh/detail/validity/soup_edges.h>
+#include <genmesh/soup_check.h>
+#include <genmesh/soup_repair.h>
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>

@@ -484,7 +484,7 @@ struct property_map<genmesh::Halfedge_mesh<P>, CGAL::vertex_point_t> {
 };
 
 // CGAL's halfedge and face index tags on every genmesh mesh (Boost's
-// vertex_index and edge_index: <genmesh/detail/mesh_functions.h>).
+// vertex_index and edge_index: <genmesh/detail/elements/mesh_functions.h>).
 template <template <class> class M, class P>
   requires genmesh::detail::is_genmesh_mesh<M>
 struct property_map<M<P>, CGAL::halfedge_index_t> {

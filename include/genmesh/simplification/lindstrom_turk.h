@@ -165,7 +165,7 @@ struct Lindstrom_turk {
     Eigen::Vector3d cv = Eigen::Vector3d::Zero();
     for (const auto& t : p.triangles) {
       const Eigen::Vector3d a = t.a - o, b = t.b - o, c = t.c - o;
-      const Eigen::Vector3d n = (b - a).cross(c - a);
+      const Eigen::Vector3d n = triangle_normal(a, b, c);
       const double l = a.cross(b).dot(c);
       sum_n += n;
       sum_l += l;
@@ -198,7 +198,7 @@ struct Lindstrom_turk {
     double volume = 0, boundary = 0, shape = 0;
     for (const auto& t : p.triangles) {
       const Eigen::Vector3d a = t.a - o, b = t.b - o, c = t.c - o;
-      const double f = (b - a).cross(c - a).dot(v) - a.cross(b).dot(c);
+      const double f = triangle_normal(a, b, c).dot(v) - a.cross(b).dot(c);
       volume += f * f;
     }
     for (const auto& b : p.border_edges) boundary += (b.t - b.s).cross(b.t - x).squaredNorm();

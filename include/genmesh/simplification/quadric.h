@@ -28,6 +28,8 @@
 // that every backend computes the same numbers.)
 #pragma once
 
+#include <genmesh/geometry.h>
+
 #include <Eigen/Core>
 
 #include <cmath>
@@ -131,7 +133,7 @@ namespace detail::simplification {
 // Degenerate triangles contribute nothing.
 inline Quadric triangle_plane(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                               bool area_weighted) {
-  Eigen::Vector3d n = (b - a).cross(c - a);
+  Eigen::Vector3d n = triangle_normal(a, b, c);
   const double len = n.norm();
   if (!(len > 0)) return {};
   n /= len;
@@ -142,7 +144,7 @@ inline Quadric triangle_plane(const Eigen::Vector3d& a, const Eigen::Vector3d& b
 inline Quadric border_plane(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                             double weight, bool area_weighted) {
   const Eigen::Vector3d e = b - a;
-  const Eigen::Vector3d fn = e.cross(c - a);
+  const Eigen::Vector3d fn = triangle_normal(a, b, c);
   Eigen::Vector3d n = e.cross(fn);
   const double len = n.norm();
   if (!(len > 0)) return {};
@@ -236,7 +238,7 @@ struct Probabilistic_quadrics {
   using Vertex_data = Quadric;
 
   Quadric face(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) const {
-    Eigen::Vector3d n = (b - a).cross(c - a);
+    Eigen::Vector3d n = triangle_normal(a, b, c);
     const double len = n.norm();
     if (!(len > 0)) return {};
     n /= len;

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -51,23 +52,27 @@ class Face_grid {
     range_[f] = n;
   }
 
-  // Calls visit(f) for every face listed in a cell b overlaps (a face may
-  // come more than once, and may no longer overlap b).
+  // Calls visit(cell) for every non-empty cell b overlaps, with the span of
+  // the faces listed there (a face may come in several cells, and may no
+  // longer overlap b): the caller walks it, prefetching ahead.
   template <class Visit>
   void query(const Box& b, Visit&& visit) const {
     for_range(range_of(b), [&](std::int64_t x, std::int64_t y, std::int64_t z) {
       const auto it = cells_.find(key(x, y, z));
       if (it == cells_.end()) return;
-      for (const std::uint32_t f : it->second) visit(f);
+      visit(std::span<const std::uint32_t>(it->second));
     });
   }
 
  private:
-  static constexpr std::int64_t half = std::int64_t{1} << 20; // 21 bits an axis
+  // 16 bits an axis, clamped (clamping keeps overlaps: a mesh wider than
+  // 65,536 cells only gets longer lists in its outer cells).
+  static constexpr std::int64_t half = std::int64_t{1} << 15;
 
-  // An inclusive range of cells (empty by default).
+  // An inclusive range of cells (empty by default); 12 bytes, as the
+  // per-face array is read at random on every insertion.
   struct Range {
-    std::int64_t x0 = 1, y0 = 1, z0 = 1, x1 = 0, y1 = 0, z1 = 0;
+    std::uint16_t x0 = 1, y0 = 1, z0 = 1, x1 = 0, y1 = 0, z1 = 0;
     bool contains(std::int64_t x, std::int64_t y, std::int64_t z) const {
       return x0 <= x && x <= x1 && y0 <= y && y <= y1 && z0 <= z && z <= z1;
     }
@@ -81,12 +86,12 @@ class Face_grid {
   }
 
   static std::uint64_t key(std::int64_t x, std::int64_t y, std::int64_t z) {
-    return (static_cast<std::uint64_t>(x) << 42) | (static_cast<std::uint64_t>(y) << 21) | static_cast<std::uint64_t>(z);
+    return (static_cast<std::uint64_t>(x) << 32) | (static_cast<std::uint64_t>(y) << 16) | static_cast<std::uint64_t>(z);
   }
 
-  std::int64_t coord(double x) const {
+  std::uint16_t coord(double x) const {
     const double c = std::floor(x * inv_);
-    return static_cast<std::int64_t>(std::clamp(c, -double(half), double(half - 1))) + half;
+    return static_cast<std::uint16_t>(static_cast<std::int64_t>(std::clamp(c, -double(half), double(half - 1))) + half);
   }
 
   template <class F>

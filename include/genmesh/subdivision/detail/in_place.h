@@ -36,7 +36,7 @@
 // other halves (first-use order), then the inner edges face by face; faces =
 // old faces, then the new ones face by face. A backend may append elements in
 // bulk with genmesh_native_append_elements(g, nv, ne, nf) (found by ADL, see
-// <genmesh/detail/halfedge_mesh_bulk.h>); otherwise add_vertex/add_edge/
+// <genmesh/detail/halfedge/bulk.h>); otherwise add_vertex/add_edge/
 // add_face are called one by one.
 // Other backends (no set_next, as the incidence mesh) and meshes with removed
 // elements refine the same way through the local operations instead

@@ -1,4 +1,4 @@
-// genmesh/detail/triangle_intersection.h — exact intersection tests between
+// genmesh/detail/geometry/triangle_intersection.h — exact intersection tests between
 // closed triangles and segments in 3D (the machinery of triangles_intersect in
 // <genmesh/geometry.h>).
 //
@@ -12,7 +12,7 @@
 // sets, and at least one projection is one-to-one on their common plane).
 #pragma once
 
-#include <genmesh/detail/predicates.h>
+#include <genmesh/detail/geometry/predicates.h>
 
 #include <Eigen/Core>
 

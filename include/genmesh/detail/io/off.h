@@ -1,4 +1,4 @@
-// genmesh/detail/io_off.h — OFF reader and writer (Geomview's Object File Format).
+// genmesh/detail/io/off.h — OFF reader and writer (Geomview's Object File Format).
 //
 // Reads the ASCII variants CGAL reads: the keyword [ST][C][N]OFF, '#' comments
 // anywhere, the counts on the keyword's line or the next, and per-vertex
@@ -8,7 +8,7 @@
 // Refused: binary OFF, 4OFF and nOFF (not 3D).
 #pragma once
 
-#include <genmesh/detail/io_common.h>
+#include <genmesh/detail/io/common.h>
 
 namespace genmesh::detail::io {
 

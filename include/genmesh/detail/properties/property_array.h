@@ -1,4 +1,4 @@
-// genmesh/detail/property_array.h — typed, dynamically added per-element arrays.
+// genmesh/detail/properties/property_array.h — typed, dynamically added per-element arrays.
 //
 // The storage behind Halfedge_mesh's properties: one Property_container per
 // element kind (vertex, halfedge, edge, face) owns any number of named or

@@ -1,4 +1,4 @@
-// genmesh/detail/io_common.h — machinery shared by the readers and writers:
+// genmesh/detail/io/common.h — machinery shared by the readers and writers:
 // whole-file reading, a text cursor that counts lines, number parsing with
 // std::from_chars, byte-order helpers, and the atomic file writer.
 //

@@ -1,4 +1,4 @@
-// genmesh/detail/io_obj.h — Wavefront OBJ reader and writer (geometry only).
+// genmesh/detail/io/obj.h — Wavefront OBJ reader and writer (geometry only).
 //
 // Reads `v x y z [w]` (extra values such as vertex colors ignored) and
 // `f` with corners written v, v/vt, v//vn or v/vt/vn, 1-based or negative
@@ -9,7 +9,7 @@
 // refer to a vertex defined later in the file.
 #pragma once
 
-#include <genmesh/detail/io_common.h>
+#include <genmesh/detail/io/common.h>
 
 #include <cctype>
 

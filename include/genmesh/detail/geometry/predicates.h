@@ -1,4 +1,4 @@
-// genmesh/detail/predicates.h — exact orientation predicates on double input.
+// genmesh/detail/geometry/predicates.h — exact orientation predicates on double input.
 //
 // orient3d and orient2d return the exact sign of their determinant for any
 // finite double input: a floating-point evaluation with Shewchuk's static

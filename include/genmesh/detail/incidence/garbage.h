@@ -1,4 +1,4 @@
-// genmesh/detail/incidence_garbage.h — Incidence_mesh::collect_garbage().
+// genmesh/detail/incidence/garbage.h — Incidence_mesh::collect_garbage().
 // Included by <genmesh/incidence_mesh.h>; not for direct use.
 //
 // The survivors are renumbered by detail::compaction_map(), the function

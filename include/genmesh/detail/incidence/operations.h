@@ -1,4 +1,4 @@
-// genmesh/detail/incidence_operations.h — the local operations of
+// genmesh/detail/incidence/operations.h — the local operations of
 // Incidence_mesh, done natively by setting and clearing matrix entries
 // (included at the end of <genmesh/incidence_mesh.h>).
 //
@@ -87,7 +87,7 @@ P midpoint(const P& a, const P& b) {
   }
 }
 
-// The raw edits (see detail/local_operations_primitives.h): same element
+// The raw edits (see detail/local_operations/primitives.h): same element
 // order as there.
 
 template <class P>

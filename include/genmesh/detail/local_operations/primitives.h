@@ -1,4 +1,4 @@
-// genmesh/detail/local_operations_primitives.h — unchecked building blocks of
+// genmesh/detail/local_operations/primitives.h — unchecked building blocks of
 // the local operations: queries (border, degree, halfedge between two
 // vertices, the vertex-once and no-pinch checks) and the raw edits join_face, join_vertex, remove_face and
 // swap_vertices.

@@ -1,4 +1,4 @@
-// genmesh/detail/io_stl.h — STL reader and writer (ASCII and binary).
+// genmesh/detail/io/stl.h — STL reader and writer (ASCII and binary).
 //
 // STL stores each facet with its own copies of its corners. The reader welds
 // them: corners with exactly equal coordinates become one point (points
@@ -16,7 +16,8 @@
 // stores single-precision floats.
 #pragma once
 
-#include <genmesh/detail/io_common.h>
+#include <genmesh/detail/io/common.h>
+#include <genmesh/geometry.h>
 
 #include <unordered_map>
 
@@ -193,9 +194,7 @@ void write_stl(Atomic_file& out, const Source& soup, bool binary, int precision)
                                         std::span<const Eigen::Vector3d> corner) {
     for (std::size_t k = 1; k + 1 < c.size(); ++k) {
       const Eigen::Vector3d* t[3] = {&corner[0], &corner[k], &corner[k + 1]};
-      Eigen::Vector3d n = (*t[1] - *t[0]).cross(*t[2] - *t[0]);
-      const double len = n.norm();
-      n = len > 0 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::Zero();
+      const Eigen::Vector3d n = normalized_or_zero(triangle_normal(*t[0], *t[1], *t[2]));
       if (binary) {
         for (int i = 0; i < 3; ++i) store_le(b, static_cast<float>(n[i]));
         for (auto* p : t)

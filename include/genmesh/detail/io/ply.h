@@ -1,4 +1,4 @@
-// genmesh/detail/io_ply.h — PLY reader and writer (Stanford polygon format).
+// genmesh/detail/io/ply.h — PLY reader and writer (Stanford polygon format).
 //
 // Reads ascii, binary_little_endian and binary_big_endian. The `vertex`
 // element gives the points from its x, y, z properties (any numeric type, any
@@ -9,7 +9,7 @@
 // double coordinates.
 #pragma once
 
-#include <genmesh/detail/io_common.h>
+#include <genmesh/detail/io/common.h>
 
 #include <vector>
 

@@ -1,4 +1,4 @@
-// genmesh/detail/mesh_functions.h — the CGAL BGL free functions of genmesh's
+// genmesh/detail/elements/mesh_functions.h — the CGAL BGL free functions of genmesh's
 // own meshes, written once.
 //
 // What it is: the part of boost::graph_traits every genmesh mesh shares
@@ -19,10 +19,12 @@
 // it is more specialized than CGAL's generic helpers that take any graph
 // (CGAL::degree(face, g) and the like), exactly as the per-class overloads it
 // replaces were; found by ADL through genmesh's index types and the mesh.
-// Included by <genmesh/halfedge_mesh.h> where the index types, ranges,
-// Index_map and Garbage_collection_maps it uses are defined; not for direct
-// use.
+// Included by <genmesh/halfedge_mesh.h> and <genmesh/incidence_mesh.h>; not
+// for direct use.
 #pragma once
+
+#include <genmesh/concepts.h>
+#include <genmesh/elements.h>
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/graph/properties.hpp>

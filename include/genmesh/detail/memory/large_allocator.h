@@ -1,4 +1,4 @@
-// genmesh/detail/large_allocator.h — an allocator for large, short-lived
+// genmesh/detail/memory/large_allocator.h — an allocator for large, short-lived
 // arrays: blocks of 4 MiB and more are 2 MiB-aligned and marked for
 // transparent huge pages (madvise MADV_HUGEPAGE where the system offers it),
 // so that touching them for the first time costs one page fault per 2 MiB

@@ -1,4 +1,4 @@
-// genmesh/detail/halfedge_mesh_bulk.h — bulk growth of a Halfedge_mesh: many
+// genmesh/detail/halfedge/bulk.h — bulk growth of a Halfedge_mesh: many
 // new elements at once, for the in-place subdivision refinement.
 //
 // genmesh_native_append_elements(m, nv, ne, nf) is the Halfedge_mesh override
