@@ -42,9 +42,9 @@ CASES = [
 # (picture name, input mesh, genmesh remesh options; "{l}" is replaced by the
 # input's mean edge length)
 REMESH_CASES = [
-    ("remesh_uniform", "elephant.off", ["--relative", "1.5"]),
-    ("remesh_adaptive", "elephant.off", ["--adaptive", "{0.4l}", "{4l}", "{0.02l}"]),
-    ("remesh_features", "fandisk.off", ["--relative", "3", "--features", "40"]),
+    ("remesh_uniform", "elephant.off", ["--relative", "1"]),
+    ("remesh_adaptive", "elephant.off", ["--adaptive", "{0.3l}", "{4l}", "{0.1l}"]),
+    ("remesh_features", "fandisk.off", ["--relative", "2", "--features", "40"]),
 ]
 
 

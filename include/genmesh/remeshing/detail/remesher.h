@@ -19,8 +19,10 @@
 // vertex, and an edge is re-queued only after a collapse at one of its ends.
 // Flips: one loop (flip_passes) for the three flip steps — valence: at most
 // 10 passes, each flip lowers the integer valence deviation; Delaunay: at
-// most 50 passes; bad triangles: 2 passes. Smoothing: fixed steps.
-// Projection: one bounded Aabb_tree query per vertex.
+// most 50 passes; bad triangles: 2 passes; a pass after the first looks only
+// at the edges near the previous pass's flips (the others would decide as
+// before). Smoothing: fixed steps. Projection: one Aabb_tree query per
+// vertex, bounded by the distance to the triangle it was last projected to.
 #pragma once
 
 #include <genmesh/concepts.h>
