@@ -170,9 +170,13 @@ public:
   /// plus the step since, prunes the search). When nothing is within the
   /// bound: face = null_face(), squared_distance = infinity, point unset.
   Closest closest_point(const Eigen::Vector3d& q, double max_squared_distance) const {
-    Closest r{};
+    // Member by member: `Closest r{}` would copy-list-initialize handles
+    // whose default constructor is explicit (OpenMesh's).
+    Closest r;
+    r.point = r.barycentric = Eigen::Vector3d::Zero();
     r.squared_distance = std::numeric_limits<double>::infinity();
     r.face = boost::graph_traits<G>::null_face();
+    r.triangle = 0;
     std::uint32_t best = npos;
     if (nodes_.empty()) return r;
     double best_d = max_squared_distance;

@@ -57,4 +57,15 @@ concept HasIndexMap = requires(const G& g) {
   { index_bound(Tag{}, g) } -> std::convertible_to<std::size_t>;
 };
 
+/// Whether G's index maps keep every live element's index across edits
+/// (genmesh's meshes, Surface_mesh and OpenMesh: removed elements leave
+/// holes, new ones get fresh indices). An adaptor whose indices are
+/// renumbered after an edit specializes this to false: Polyhedron_3, whose
+/// ids are made a dense numbering again after every removal
+/// (<genmesh/adaptors/cgal.h>). Algorithms that keep index-keyed tables
+/// across edits (simplify, isotropic_remeshing and its steps) refuse such a
+/// mesh at compile time instead of reading stale tables.
+template <class G>
+inline constexpr bool indices_survive_edits = true;
+
 } // namespace genmesh

@@ -445,6 +445,11 @@ GENMESH_POLYHEDRON_INDEX_GET(edge_index_t)
 GENMESH_POLYHEDRON_INDEX_GET(face_index_t)
 #undef GENMESH_POLYHEDRON_INDEX_GET
 
+// Polyhedron_3's ids are renumbered densely after a removal (above), so
+// index-keyed tables kept across edits go stale: see indices_survive_edits.
+template <GENMESH_POLYHEDRON_TPARAMS>
+inline constexpr bool indices_survive_edits<GENMESH_POLYHEDRON> = false;
+
 template <GENMESH_POLYHEDRON_TPARAMS>
   requires detail::polyhedron_has_ids<GENMESH_POLYHEDRON>
 std::size_t index_bound(vertex_index_t, const GENMESH_POLYHEDRON& p) {
