@@ -545,6 +545,17 @@ class Collapser {
     return t;
   }
 
+  // The corners of live face f as its slot has them (set by build_grid and
+  // update_grid, which see every face whose corners a collapse changes).
+  Mesh_triangle<std::uint32_t> slot_triangle(std::size_t f) const {
+    Mesh_triangle<std::uint32_t> t;
+    for (int c = 0; c < 3; ++c) {
+      t.id[c] = slot_[f].v[c];
+      t.p[c] = pos_[t.id[c]];
+    }
+    return t;
+  }
+
   // The mean length of the live edges (0 without any).
   double mean_edge_length() const {
     double sum = 0;
@@ -615,7 +626,7 @@ class Collapser {
           const std::size_t f = fi(face(y, g_));
           if (slot_[f].seen != ring) {
             slot_[f].seen = ring;
-            auto t = triangle(f);
+            auto t = slot_triangle(f); // corners kept current in the slot
             int ends = 0;
             for (int i = 0; i < 3; ++i)
               if (t.id[i] == ip || t.id[i] == iq) {
@@ -686,10 +697,7 @@ class Collapser {
       for (std::size_t i = 0; i < fresh_.size() && !hit; ++i) {
         if (!sl.overlaps(fresh_box_[i])) continue;
         if (!built) {
-          for (int c = 0; c < 3; ++c) {
-            u.id[c] = sl.v[c];
-            u.p[c] = pos_[sl.v[c]];
-          }
+          u = slot_triangle(f);
           built = true;
         }
         if (!off_plane(i, u) && faces_intersect(fresh_[i], u)) hit = true;
