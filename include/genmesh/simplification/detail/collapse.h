@@ -24,6 +24,7 @@
 #pragma once
 
 #include <genmesh/concepts.h>
+#include <genmesh/detail/geometry/morton.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/features.h>
 #include <genmesh/geometry.h>
@@ -612,13 +613,7 @@ class Collapser {
   // The Morton code of a point in cell units (21 bits an axis, clamped).
   static std::uint64_t morton(const Eigen::Vector3d& c) {
     auto spread = [](double x) {
-      std::uint64_t v = static_cast<std::uint64_t>(std::clamp(x, 0.0, double((1u << 21) - 1)));
-      v = (v | v << 32) & 0x1f00000000ffffULL;
-      v = (v | v << 16) & 0x1f0000ff0000ffULL;
-      v = (v | v << 8) & 0x100f00f00f00f00fULL;
-      v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
-      v = (v | v << 2) & 0x1249249249249249ULL;
-      return v;
+      return genmesh::detail::morton_spread(static_cast<std::uint64_t>(std::clamp(x, 0.0, double((1u << 21) - 1))));
     };
     return spread(c.x()) | spread(c.y()) << 1 | spread(c.z()) << 2;
   }
