@@ -5,6 +5,7 @@
 
 #include <genmesh/aabb_tree.h>
 #include <genmesh/features.h>
+#include <genmesh/generators.h>
 #include <genmesh/geometry.h>
 #include <genmesh/io.h>
 #include <genmesh/measures.h>
@@ -247,6 +248,34 @@ TYPED_TEST(Geometry, HandMadeValues) {
   auto ti = mesh_of<TypeParam>(inv);
   EXPECT_NEAR(genmesh::volume(ti), -8.0 / 3.0, 1e-12);
   for (const auto h : halfedges(ti)) EXPECT_NEAR(genmesh::dihedral_angle(h, ti), -bend, 1e-12);
+}
+
+// Discrete curvatures: a sphere of radius 2 (icosphere, 4 levels) has both
+// principal curvatures near 1/2; a flat grid has none; a border vertex
+// reports zeros. Bit for bit as on Halfedge_mesh.
+TYPED_TEST(Geometry, VertexCurvature) {
+  Polygon_soup sphere = genmesh::make_icosphere(4);
+  for (auto& p : sphere.points) p *= 2;
+  const auto g = mesh_of<TypeParam>(sphere);
+  const auto r = mesh_of<genmesh_test::Halfedge_mesh>(sphere);
+  std::vector<double> ours, ref;
+  for (const auto v : vertices(g)) {
+    const auto k = genmesh::vertex_curvature(v, g);
+    EXPECT_NEAR(k.mean, 0.5, 0.02);
+    EXPECT_NEAR(k.gaussian, 0.25, 0.02);
+    EXPECT_NEAR(k.max_abs(), 0.5, 0.05);
+    EXPECT_LE(k.min, k.max);
+    ours.push_back(k.max_abs());
+  }
+  for (const auto v : vertices(r)) ref.push_back(genmesh::vertex_curvature(v, r).max_abs());
+  EXPECT_EQ(ours, ref);
+  const auto flat = mesh_of<TypeParam>(genmesh::make_grid(6, 6));
+  for (const auto v : vertices(flat)) {
+    const auto k = genmesh::vertex_curvature(v, flat);
+    // The angle defect rounds to ~1e-14; the root of H² − K makes that ~1e-7.
+    EXPECT_NEAR(k.max_abs(), 0.0, 1e-6);
+    EXPECT_NEAR(k.gaussian, 0.0, 1e-9);
+  }
 }
 
 // The same numbers, bit for bit, on every backend (the per-face sums start

@@ -39,6 +39,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numbers>
 #include <span>
 
 namespace genmesh {
@@ -59,6 +60,28 @@ halfedge_descriptor_t<G> canonical_halfedge(face_descriptor_t<G> f, const G& g) 
       const std::size_t i = get(vi, target(h, g));
       if (i < bi) bi = i, best = h;
       h = next(h, g);
+    }
+    return best;
+  } else {
+    return h0;
+  }
+}
+
+// The halfedge into v whose source has the lowest vertex index (halfedge(v, g)
+// without a vertex index map): the start of per-vertex sums that must round
+// alike on every backend. null_halfedge() for an isolated vertex.
+template <FaceGraph G>
+halfedge_descriptor_t<G> canonical_halfedge_into(vertex_descriptor_t<G> v, const G& g) {
+  const halfedge_descriptor_t<G> h0 = halfedge(v, g);
+  if constexpr (HasIndexMap<G, vertex_index_t>) {
+    if (h0 == boost::graph_traits<G>::null_halfedge()) return h0;
+    const auto vi = get(vertex_index, g);
+    halfedge_descriptor_t<G> best = h0, h = opposite(next(h0, g), g);
+    std::size_t bi = get(vi, source(h0, g));
+    while (h != h0) {
+      const std::size_t i = get(vi, source(h, g));
+      if (i < bi) bi = i, best = h;
+      h = opposite(next(h, g), g);
     }
     return best;
   } else {
@@ -211,6 +234,13 @@ inline double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) 
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
+/// The cotangent of the angle between the vectors a and b: a·b / |a × b|;
+/// 0 when they are parallel or one is zero.
+inline double cotangent_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const double s = a.cross(b).norm();
+  return s > 0 ? a.dot(b) / s : 0.0;
+}
+
 /// corner_angle(h, g[, pm]): the angle of face(h) at target(h), between the
 /// sides to source(h) and to target(next(h)), in radians.
 inline constexpr struct Corner_angle_fn {
@@ -295,6 +325,65 @@ inline constexpr struct Vertex_normal_fn {
     return (*this)(v, g, get(vertex_point, g));
   }
 } vertex_normal{};
+
+/// The discrete curvatures at a vertex (see vertex_curvature).
+struct Vertex_curvature {
+  double mean = 0;      ///< mean curvature H ≥ 0 (half the length of the cotangent Laplacian of the position)
+  double gaussian = 0;  ///< Gaussian curvature K (angle defect over area)
+  double min = 0;       ///< H − √max(0, H² − K)
+  double max = 0;       ///< H + √max(0, H² − K)
+  /// The larger principal curvature in absolute value.
+  double max_abs() const { return std::max(std::abs(min), std::abs(max)); }
+};
+
+/// vertex_curvature(v, g[, pm]): the discrete curvatures at the inner vertex
+/// v of a triangle mesh (Meyer, Desbrun, Schröder & Barr 2003): the mean
+/// curvature from the cotangent Laplacian and the Gaussian curvature from the
+/// angle defect, both over v's mixed Voronoi area; the principal curvatures
+/// from them (pmp-library's SurfaceCurvature::analyze). All zero for a border
+/// or isolated vertex and for a vertex whose area is zero. Sums start at the
+/// neighbour with the lowest vertex index, so every backend rounds alike.
+inline constexpr struct Vertex_curvature_fn {
+  template <FaceGraph G, PointMapOf<G> PointMap>
+  Vertex_curvature operator()(vertex_descriptor_t<G> v, const G& g, const PointMap& pm) const {
+    Vertex_curvature k;
+    const auto h0 = detail::geom::canonical_halfedge_into(v, g);
+    if (h0 == boost::graph_traits<G>::null_halfedge()) return k;
+    const auto null = boost::graph_traits<G>::null_face();
+    const Eigen::Vector3d p = point(v, g, pm);
+    const auto cot = cotangent_between;
+    Eigen::Vector3d laplace = Eigen::Vector3d::Zero();
+    double area = 0, angles = 0;
+    auto h = h0;
+    do {
+      if (face(h, g) == null || face(opposite(h, g), g) == null) return k;
+      // Face (a, v, c): h = a → v, c the third corner.
+      const Eigen::Vector3d a = point(source(h, g), g, pm), c = point(target(next(h, g), g), g, pm);
+      const Eigen::Vector3d b = point(target(next(opposite(h, g), g), g), g, pm); // across edge (a, v)
+      laplace += (cot(p - c, a - c) + cot(p - b, a - b)) * (a - p);
+      const Eigen::Vector3d va = a - p, vc = c - p;
+      const double angle_v = angle_between(va, vc), angle_a = angle_between(p - a, c - a);
+      const double angle_c = angle_between(p - c, a - c);
+      angles += angle_v;
+      const double half = std::numbers::pi / 2;
+      if (angle_v > half) area += 0.25 * triangle_normal(p, a, c).norm();
+      else if (angle_a > half || angle_c > half) area += 0.125 * triangle_normal(p, a, c).norm();
+      else area += (va.squaredNorm() * cot(p - c, a - c) + vc.squaredNorm() * cot(p - a, c - a)) / 8;
+      h = opposite(next(h, g), g);
+    } while (h != h0);
+    if (!(area > 0)) return k;
+    k.mean = 0.5 * laplace.norm() / (2 * area);
+    k.gaussian = (2 * std::numbers::pi - angles) / area;
+    const double s = std::sqrt(std::max(0.0, k.mean * k.mean - k.gaussian));
+    k.min = k.mean - s;
+    k.max = k.mean + s;
+    return k;
+  }
+  template <FaceGraph G>
+  Vertex_curvature operator()(vertex_descriptor_t<G> v, const G& g) const {
+    return (*this)(v, g, get(vertex_point, g));
+  }
+} vertex_curvature{};
 
 /// mean_edge_length(g[, pm]): the mean length of g's edges (0 without edges).
 inline constexpr struct Mean_edge_length_fn {

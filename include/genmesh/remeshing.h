@@ -34,11 +34,9 @@
 //   on Halfedge_mesh, CGAL::Surface_mesh and Incidence_mesh (its native
 //   operations; never a copy). See detail/remesher.h for how, and for the
 //   bound on every loop.
-// Limits: triangles only after the optional triangulation; projection finds
-// a local minimum of the distance by walking from the previous face (the
-// global one on smooth inputs, not guaranteed across thin folds); adaptive
-// sizing is pmp-library's rule; garbage (removed elements) is left in g, as
-// the local operations leave it.
+// Limits: triangles only after the optional triangulation; adaptive sizing
+// is pmp-library's rule (curvature of the input, options.h); garbage
+// (removed elements) is left in g, as the local operations leave it.
 #pragma once
 
 #include <genmesh/remeshing/collapse_short_edges.h>
@@ -59,7 +57,8 @@ namespace genmesh {
 /// mean edge length). Returns what was done. Throws genmesh::invalid_input
 /// (g unchanged) on the refusals listed at the top of this header.
 /// The visitor (<genmesh/visitor.h>) sees every split, collapse and flip,
-/// and on_step("iteration", done, options.iterations) after each round.
+/// every vertex move of smoothing and projection (on_vertex_moved), and
+/// on_step("iteration", done, options.iterations) after each round.
 template <detail::remeshing::Remeshable G, class Visitor = Mutation_visitor>
 Remeshing_result isotropic_remeshing(G& g, const Remeshing_options& options = {}, Visitor&& visitor = {}) {
   detail::remeshing::Remesher<G, std::remove_cvref_t<Visitor>> r(g, options, "isotropic_remeshing", visitor);

@@ -24,7 +24,9 @@
 //   An algorithm calls them for the local operations it performs through
 //   <genmesh/local_operations.h>; a backend's bulk path (e.g. subdivision's
 //   in-place refinement of Halfedge_mesh) performs none and calls none.
-//   on_vertex_mask is the per-vertex hook of subdivision (attribute transport).
+//   on_vertex_mask is the per-vertex hook of subdivision (attribute transport);
+//   on_vertex_moved follows a vertex move that changes no connectivity
+//   (remeshing's smoothing and projection).
 // - per algorithm: on_started(g) once before the algorithm changes g,
 //   on_step(step, done, total) for progress (called with done = 0 before the
 //   first unit of work and again after each unit, so the last call has done
@@ -74,6 +76,10 @@ struct Mutation_visitor {
   /// collapses, source(h) disappears, target(h) survives and moves to
   /// `position` (an Eigen::Vector3d); `cost` is the policy's cost.
   void on_collapse_placement(const auto& /*h*/, const auto& /*position*/, double /*cost*/, const auto& /*g*/) {}
+  /// After an algorithm moved vertex v without changing connectivity
+  /// (remeshing's tangential smoothing and projection): v's point is new.
+  /// Called once per vertex and move step, after the point is written.
+  void on_vertex_moved(const auto& /*v*/, const auto& /*g*/) {}
   /// After split_face(h1, h2): h is the new halfedge (next(h1) == h); face(h)
   /// is the old face, face(opposite(h)) the new one.
   void on_split_face(const auto& /*h*/, const auto& /*g*/) {}

@@ -31,10 +31,14 @@ enum class Constraints { resample, protect };
 /// or refused (invalid_input naming the first one).
 enum class Polygons { triangulate, refuse };
 
-/// Curvature-adapted sizing (pmp-library's adaptive remeshing): at each input
-/// vertex the length that keeps the chord error of an equilateral triangle at
-/// approximation_error on a sphere of the vertex's largest principal
-/// curvature, clamped to [min_length, max_length].
+/// Curvature-adapted sizing (pmp-library's adaptive remeshing): each input
+/// vertex gets the length whose equilateral triangles deviate at most
+/// approximation_error from a sphere of the vertex's largest principal
+/// curvature κ (vertex_curvature, <genmesh/geometry.h>; smoothed twice over
+/// the neighbours): √(6e/κ − 3e²), clamped to [min_length, max_length]
+/// (flat: max_length). An edge's target is the mean of its ends'; a split's
+/// new vertex takes the mean of its ends', a projected vertex the value
+/// interpolated on the input triangle it lands on. Lengths in the mesh's units.
 struct Adaptive_sizing {
   double min_length = 0;
   double max_length = 0;
@@ -59,8 +63,9 @@ struct Remeshing_options {
   bool projection = true;
   /// The flip rule.
   Flips flips = Flips::valence;
-  /// Edges whose dihedral angle exceeds this many degrees are features
-  /// (constrained); 0 or less: no detection.
+  /// Edges whose faces' normals make an angle of at least this many degrees
+  /// are features (constrained), as detect_sharp_edges (<genmesh/features.h>)
+  /// finds them; 0 or less: no detection.
   double feature_angle = 0;
   /// User constrained edges, by edge index (get(edge_index, g)); empty: none.
   /// Shorter than the index bound: the missing ones are not constrained.
@@ -70,7 +75,8 @@ struct Remeshing_options {
   /// Remesh only these faces (by face index); empty: every face. The patch's
   /// border acts as a constraint, the faces outside stay as they are.
   std::vector<char> faces = {};
-  /// Curvature-adapted sizing instead of the uniform length L.
+  /// Curvature-adapted sizing instead of the uniform length L (then
+  /// target_edge_length and relative_edge_length are not used).
   std::optional<Adaptive_sizing> adaptive = std::nullopt;
   /// Faces that are not triangles.
   Polygons polygons = Polygons::triangulate;

@@ -56,6 +56,7 @@ public:
       auto h = h0;
       do {
         soup.add_point(to_eigen(get(pm, target(h, g))));
+        source_vertex_.push_back(static_cast<std::size_t>(get(get(vertex_index, g), target(h, g))));
         h = next(h, g);
       } while (h != h0);
       std::vector<Polygon_soup::Index> corners;
@@ -71,12 +72,28 @@ public:
   Reference_surface(const Reference_surface&) = delete;
   Reference_surface& operator=(const Reference_surface&) = delete;
 
+  /// Attaches a value to every vertex of the indexed surface, by vertex
+  /// index of the g given to the constructor (call before g changes):
+  /// project() then interpolates it at the point it returns.
+  void attach_vertex_values(const G& g, const std::vector<double>& by_vertex_index) {
+    values_.assign(3 * tree_->triangle_count(), 0.0);
+    for (std::size_t t = 0; t < tree_->triangle_count(); ++t)
+      for (int i = 0; i < 3; ++i) {
+        const auto c = tree_->triangle_corners(t)[static_cast<std::size_t>(i)];
+        const std::size_t vi = copy_ ? source_vertex_[static_cast<std::size_t>(get(get(vertex_index, *copy_), c))]
+                                     : static_cast<std::size_t>(get(get(vertex_index, g), c));
+        values_[3 * t + static_cast<std::size_t>(i)] = by_vertex_index[vi];
+      }
+  }
+
   /// The point of the surface nearest to q, given a point `on` of the
   /// surface (it bounds the search: the nearest point is no farther) and
   /// `triangle`, the (leaf-order) triangle of the previous answer or npos,
   /// which bounds it tighter: a vertex moved tangentially is usually still
-  /// nearest to the triangle it was on. `triangle` is updated.
-  Eigen::Vector3d project(const Eigen::Vector3d& q, const Eigen::Vector3d& on, std::size_t& triangle) const {
+  /// nearest to the triangle it was on. `triangle` is updated; with attached
+  /// values, `value` is set to theirs interpolated at the returned point.
+  Eigen::Vector3d project(const Eigen::Vector3d& q, const Eigen::Vector3d& on, std::size_t& triangle,
+                          double* value = nullptr) const {
     if (tree_->empty() || !q.allFinite()) return q;
     double d2 = (q - on).squaredNorm();
     if (triangle < tree_->triangle_count()) {
@@ -88,14 +105,9 @@ public:
       const double r = std::sqrt(d2) * (1 + 1e-9) + slack_;
       const auto c = tree_->closest_point(q, r * r);
       // Nothing that near: face is null_face().
-      if (c.face != boost::graph_traits<G>::null_face()) {
-        triangle = c.triangle;
-        return snap(q, c);
-      }
+      if (c.face != boost::graph_traits<G>::null_face()) return answer(q, c, triangle, value);
     }
-    const auto c = tree_->closest_point(q);
-    triangle = c.triangle;
-    return snap(q, c);
+    return answer(q, tree_->closest_point(q), triangle, value);
   }
 
   /// No previous triangle.
@@ -104,6 +116,15 @@ public:
   bool empty() const { return tree_->empty(); }
 
 private:
+  Eigen::Vector3d answer(const Eigen::Vector3d& q, const typename Aabb_tree<G>::Closest& c, std::size_t& triangle,
+                         double* value) const {
+    triangle = c.triangle;
+    if (value && !values_.empty())
+      *value = c.barycentric[0] * values_[3 * c.triangle] + c.barycentric[1] * values_[3 * c.triangle + 1] +
+               c.barycentric[2] * values_[3 * c.triangle + 2];
+    return snap(q, c);
+  }
+
   // A point already on the surface (up to the slack) stays where it is:
   // re-projecting it would only add rounding, and on needle triangles
   // rounding decides which collapses pass their orientation test.
@@ -116,6 +137,8 @@ private:
   }
 
   std::optional<G> copy_;
+  std::vector<std::size_t> source_vertex_; // patch: g's vertex index of each vertex of copy_
+  std::vector<double> values_;             // attached values, 3 per triangle (leaf order)
   std::optional<Aabb_tree<G>> tree_;
   double slack_ = 0;
 };

@@ -19,12 +19,15 @@
 // vertex, and an edge is re-queued only after a collapse at one of its ends.
 // Flips: one loop (flip_passes) for the three flip steps — valence: at most
 // 10 passes, each flip lowers the integer valence deviation; Delaunay: at
-// most 50 passes; bad triangles: 2 passes. Smoothing: fixed steps.
-// Projection: one bounded Aabb_tree query per vertex.
+// most 50 passes; bad triangles: 2 passes; a pass after the first looks only
+// at the edges near the previous pass's flips (the others would decide as
+// before). Smoothing: fixed steps. Projection: one Aabb_tree query per
+// vertex, bounded by the distance to the triangle it was last projected to.
 #pragma once
 
 #include <genmesh/concepts.h>
 #include <genmesh/exceptions.h>
+#include <genmesh/features.h>
 #include <genmesh/geometry.h>
 #include <genmesh/local_operations.h>
 #include <genmesh/point_traits.h>
@@ -99,6 +102,7 @@ public:
     check_manifold();
     set_length();
     set_flags();
+    set_sizing();
   }
 
   Remesher(G& g, const Remeshing_options& o, const char* who)
@@ -109,6 +113,7 @@ public:
     check_manifold();
     set_length();
     set_flags();
+    set_sizing();
   }
 
   Remesher(const Remesher&) = delete;
@@ -121,6 +126,7 @@ public:
   /// the patch) and each vertex's last point on it.
   void build_reference() {
     ref_ = std::make_unique<Reference_surface<G>>(g_, o_.faces);
+    if (!sizing_.empty()) ref_->attach_vertex_values(g_, sizing_);
     on_.assign(index_bound(vertex_index, g_), Eigen::Vector3d::Zero());
     on_triangle_.assign(on_.size(), Reference_surface<G>::npos);
     for (auto v : vertices(g_)) on_[vid(v)] = pt(v);
@@ -282,22 +288,16 @@ public:
   /// pmp-library's remove_caps, widened). Two passes.
   std::size_t remove_bad_triangles() {
     const double bad = std::cos(30.0 * std::numbers::pi / 180.0); // cos of the smallest angle we keep
-    // Each pass looks only at the edges of triangles with an angle below
-    // 30° (found without roots), in edge index order.
-    std::vector<std::pair<std::uint32_t, H>> marked;
+    // The first pass looks only at the edges of triangles with an angle
+    // below 30° (found without roots), the second at what the first changed.
     const std::size_t n = flip_passes(
         2,
-        [&](std::vector<H>& hs) {
-          hs.clear();
-          marked.clear();
+        [&](std::vector<int>& mark) {
           for (auto f : faces(g_)) {
             const H h0 = halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
-            if (!has_angle_below_30(pt(target(h0, g_)), pt(target(h1, g_)), pt(target(h2, g_)))) continue;
-            for (const H x : {h0, h1, h2}) marked.emplace_back(eid(x), canonical(x));
+            if (has_angle_below_30(pt(target(h0, g_)), pt(target(h1, g_)), pt(target(h2, g_))))
+              for (const H x : {h0, h1, h2}) mark[eid(x)] = 0;
           }
-          std::sort(marked.begin(), marked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-          for (std::size_t i = 0; i < marked.size(); ++i)
-            if (i == 0 || marked[i].first != marked[i - 1].first) hs.push_back(marked[i].second);
         },
         [&](H h) {
           const auto [before, after] = flip_max_cos(h);
@@ -317,43 +317,56 @@ public:
     return small(-ab.dot(ca), lab, lca) || small(-ab.dot(bc), lab, lbc) || small(-bc.dot(ca), lbc, lca);
   }
 
-  /// The one flip loop of the flip steps: passes over the edges (in
-  /// edges(g) order) flipping every free inner edge h for which want(h)
+  /// The one flip loop of the flip steps: passes over the edges in
+  /// edges(g) order flipping every free inner edge h for which want(h)
   /// holds, the flip keeps both triangles' orientation and can_flip_edge
-  /// agrees; after(h) follows each flip (h is then the new edge). Ends after
-  /// a pass without flips or after max_passes passes. Returns the flips.
+  /// agrees; after(h) follows each flip (h is then the new edge). The first
+  /// pass looks at every edge, or at those first_marked(mark) marks with 0;
+  /// each later pass only at the edges whose want() a flip of the pass
+  /// before may have changed (neighbourhood_of_flip). Ends after a pass
+  /// without flips or after max_passes passes. Returns the flips.
   template <class Want, class After>
   std::size_t flip_passes(int max_passes, Want&& want, After&& after) {
-    bool listed = false;
-    return flip_passes(
-        max_passes,
-        [&](std::vector<H>& hs) {
-          if (listed) return;
-          for (auto e : edges(g_)) hs.push_back(halfedge(e, g_));
-          listed = true;
-        },
-        want, after);
+    return flip_passes(max_passes, [](std::vector<int>& mark) { std::fill(mark.begin(), mark.end(), 0); }, want,
+                       after);
   }
 
-  /// As above, over the halfedges candidates(hs) puts into hs before each pass.
-  template <class Candidates, class Want, class After>
-  std::size_t flip_passes(int max_passes, Candidates&& candidates, Want&& want, After&& after) {
-    std::vector<H> hs;
+  template <class FirstMarked, class Want, class After>
+  std::size_t flip_passes(int max_passes, FirstMarked&& first_marked, Want&& want, After&& after) {
+    std::vector<H> all;
+    for (auto e : edges(g_)) all.push_back(halfedge(e, g_));
+    std::vector<int> mark(index_bound(edge_index, g_), -1); // the last pass that must look at the edge
+    first_marked(mark);
     std::size_t n = 0;
     for (int pass = 0; pass < max_passes; ++pass) {
-      candidates(hs);
       std::size_t flipped = 0;
-      for (const H h : hs) {
+      for (const H h : all) {
+        if (mark[eid(h)] < pass) continue; // marked for this pass, or by a flip of it (then for the next too)
         if (!free_inner(h) || !want(h)) continue;
         if (!flip_keeps_orientation(h) || !genmesh::can_flip_edge(h, std::as_const(g_))) continue;
         genmesh::flip_edge(h, g_, *vis_);
         after(h);
         ++flipped;
+        neighbourhood_of_flip(h, [&](std::uint32_t i) { mark[i] = pass + 1; });
       }
       n += flipped;
       if (flipped == 0) break;
     }
     return n;
+  }
+
+  /// Calls mark(edge index) for the edges whose flip decision a flip of h
+  /// may change: those at the four corners of h's two triangles (their
+  /// valences, their triangles) and those opposite these corners in their
+  /// triangles (the valences of the opposite corners).
+  template <class Mark>
+  void neighbourhood_of_flip(H h, Mark&& mark) const {
+    const H oh = opposite(h, g_);
+    for (const V v : {target(h, g_), target(oh, g_), target(next(h, g_), g_), target(next(oh, g_), g_)})
+      for_each_in_any_order(v, [&](H x) {
+        mark(eid(x));
+        if (!is_border(x)) mark(eid(next(next(x, g_), g_)));
+      });
   }
 
   /// Neither constrained nor fixed, with a face on both sides.
@@ -491,7 +504,10 @@ public:
       for (std::size_t i = 0; i < free.size(); ++i)
         if (moved[i].allFinite()) pos[free_id[i]] = moved[i];
     }
-    for (std::size_t i = 0; i < free.size(); ++i) set_pt(free[i], pos[free_id[i]]);
+    for (std::size_t i = 0; i < free.size(); ++i) {
+      set_pt(free[i], pos[free_id[i]]);
+      vis_->on_vertex_moved(free[i], std::as_const(g_));
+    }
     return free.size();
   }
 
@@ -502,8 +518,11 @@ public:
     for (auto v : vertices(g_)) {
       if (vflag_at(v) & v_fixed) continue;
       Eigen::Vector3d& on = on_at(v);
-      on = ref_->project(pt(v), on, on_triangle_[vid(v)]);
+      const Eigen::Vector3d p = pt(v);
+      on = ref_->project(p, on, on_triangle_[vid(v)], sizing_.empty() ? nullptr : &sizing_[vid(v)]);
+      if (on == p) continue;
       set_pt(v, on);
+      vis_->on_vertex_moved(v, std::as_const(g_));
     }
   }
 
@@ -596,19 +615,16 @@ private:
   // --- sizing ----------------------------------------------------------------
 
   double size_at(V v) const { return sizing_.empty() ? L_ : sizing_[vid(v)]; }
-  double hi2(H h) const {
-    if (sizing_.empty()) return hi2_;
-    const double s = (4.0 / 3.0) * std::min(size_at(source(h, g_)), size_at(target(h, g_)));
-    return s * s;
-  }
+  // An edge's target: the mean of its ends' targets (pmp-library's rule).
+  double hi2(H h) const { return hi2(source(h, g_), target(h, g_)); }
   double hi2(V a, V b) const {
     if (sizing_.empty()) return hi2_;
-    const double s = (4.0 / 3.0) * std::min(size_at(a), size_at(b));
+    const double s = (4.0 / 3.0) * 0.5 * (size_at(a) + size_at(b));
     return s * s;
   }
   double lo2(H h) const {
     if (sizing_.empty()) return lo2_;
-    const double s = (4.0 / 5.0) * std::min(size_at(source(h, g_)), size_at(target(h, g_)));
+    const double s = (4.0 / 5.0) * 0.5 * (size_at(source(h, g_)) + size_at(target(h, g_)));
     return s * s;
   }
   double min_length_bound() const { return o_.adaptive ? o_.adaptive->min_length : L_; }
@@ -658,8 +674,8 @@ private:
     const Eigen::Vector3d p0 = pt(target(h, g_)), p1 = pt(target(oh, g_));
     const Eigen::Vector3d p2 = pt(target(next(h, g_), g_)), p3 = pt(target(next(oh, g_), g_));
     // Before: (p1, p0, p2) and (p0, p1, p3); after: (p0, p2, p3) and (p2, p1, p3).
-    const Eigen::Vector3d old_n = (p0 - p1).cross(p2 - p1) + (p1 - p0).cross(p3 - p0);
-    const Eigen::Vector3d n1 = (p2 - p0).cross(p3 - p0), n2 = (p1 - p2).cross(p3 - p2);
+    const Eigen::Vector3d old_n = triangle_normal(p1, p0, p2) + triangle_normal(p0, p1, p3);
+    const Eigen::Vector3d n1 = triangle_normal(p0, p2, p3), n2 = triangle_normal(p2, p1, p3);
     return n1.dot(n2) > 0 && n1.dot(old_n) > 0 && n2.dot(old_n) > 0;
   }
 
@@ -698,7 +714,7 @@ private:
       if (b == y) return;
       // face(in) = (a, x, b) becomes (a, y, b).
       const Eigen::Vector3d pb = pt(b);
-      const Eigen::Vector3d before = (px - pa).cross(pb - pa), after = (py - pa).cross(pb - pa);
+      const Eigen::Vector3d before = triangle_normal(pa, px, pb), after = triangle_normal(pa, py, pb);
       if (!(before.dot(after) > 0)) ok = false;
     });
     return ok;
@@ -724,9 +740,11 @@ private:
     // Both allowed: the lower-valence end disappears (pmp-library's rule).
     H first = ab ? h : oh, second = ab && ba ? oh : null_h();
     if (ab && ba && valence(source(oh, g_)) < valence(source(h, g_))) std::swap(first, second);
-    if (!genmesh::can_collapse_edge(edge(h, g_), std::as_const(g_))) return std::nullopt;
+    bool topology_checked = false; // the link condition, once, after the cheaper geometric test passed
     for (const H c : {first, second}) {
       if (c == null_h() || !collapse_geometry_ok(c)) continue;
+      if (!topology_checked && !genmesh::can_collapse_edge(edge(h, g_), std::as_const(g_))) return std::nullopt;
+      topology_checked = true;
       // collapse_edge removes x = source(c), c's edge, x–t on top and y–b at
       // the bottom (x–b survives as y–b): y–b's flags move to x–b's index.
       const H oc = opposite(c, g_);
@@ -841,7 +859,9 @@ private:
       const std::size_t i = get(fi_, f);
       return !patch || (i < o_.faces.size() && o_.faces[i]);
     };
-    const double cos_feature = std::cos(o_.feature_angle * std::numbers::pi / 180.0);
+    // Feature edges: the geometry layer's detect_sharp_edges (CGAL's rule).
+    std::optional<Edge_flag_map<G>> sharp;
+    if (o_.feature_angle > 0) sharp.emplace(sharp_edges(g_, o_.feature_angle));
     for (auto e : edges(g_)) {
       const H h = halfedge(e, g_), oh = opposite(h, g_);
       const std::size_t i = get(ei_, e);
@@ -851,13 +871,7 @@ private:
       else if (in_h != in_oh) // border of the mesh, or of the patch (then its outer face must not change)
         f = face(h, g_) != null_f() && face(oh, g_) != null_f() ? e_constrained | e_fixed : e_constrained;
       else if (i < o_.constrained_edges.size() && o_.constrained_edges[i]) f = e_constrained;
-      else if (o_.feature_angle > 0) {
-        const Eigen::Vector3d p0 = pt(target(h, g_)), p1 = pt(target(oh, g_));
-        const Eigen::Vector3d n1 = (p0 - p1).cross(pt(target(next(h, g_), g_)) - p1);
-        const Eigen::Vector3d n2 = (p1 - p0).cross(pt(target(next(oh, g_), g_)) - p0);
-        const double d = n1.norm() * n2.norm();
-        if (d > 0 && n1.dot(n2) < cos_feature * d) f = e_constrained;
-      }
+      else if (sharp && get(*sharp, e)) f = e_constrained;
       eflag_[i] = f;
     }
     // Vertices: constrained edges counted; corners (not 0 or 2) fixed; a
@@ -884,6 +898,50 @@ private:
     if (o_.constraints == Constraints::protect)
       for (auto& f : eflag_)
         if (f & e_constrained) f |= e_fixed;
+  }
+
+  /// Adaptive sizing (pmp-library's Remeshing::preprocessing): each
+  /// vertex's largest principal curvature κ (vertex_curvature; not on
+  /// constrained edges), smoothed twice over its neighbours with clamped
+  /// cotangent weights, then the length whose equilateral triangles deviate
+  /// approximation_error e from a sphere of radius 1/κ: √(6e/κ − 3e²)
+  /// (e ≥ 1/κ: √3 e), clamped to [min_length, max_length].
+  void set_sizing() {
+    if (!o_.adaptive) return;
+    const Adaptive_sizing& a = *o_.adaptive;
+    const std::size_t vb = index_bound(vertex_index, g_);
+    std::vector<double> c(vb, -1.0), next_c(vb, 0.0);
+    for (auto v : vertices(g_))
+      if (!(vflag_at(v) & v_constrained)) c[vid(v)] = vertex_curvature(v, g_, pm_).max_abs();
+    for (int iter = 0; iter < 2; ++iter) {
+      for (auto v : vertices(g_)) {
+        double ww = 0, cc = 0;
+        for_each_in(v, [&](H x) {
+          const double cj = c[vid(source(x, g_))];
+          if (!(cj > 0)) return;
+          const Eigen::Vector3d p = pt(v), q = pt(source(x, g_));
+          double w = 0;
+          for (const H y : {x, opposite(x, g_)})
+            if (!is_border(y)) {
+              const Eigen::Vector3d r = pt(target(next(y, g_), g_));
+              w += cotangent_between(p - r, q - r);
+            }
+          w = std::max(0.0, w);
+          ww += w;
+          cc += w * cj;
+        });
+        next_c[vid(v)] = ww > 0 ? cc / ww : 0.0;
+      }
+      std::swap(c, next_c);
+    }
+    sizing_.assign(vb, a.max_length);
+    const double e = a.approximation_error;
+    for (auto v : vertices(g_)) {
+      const double k = c[vid(v)];
+      double h = a.max_length;
+      if (k > 0) h = e < 1 / k ? std::sqrt(6 * e / k - 3 * e * e) : e * std::sqrt(3.0);
+      sizing_[vid(v)] = std::clamp(h, a.min_length, a.max_length);
+    }
   }
 
   G& g_;
