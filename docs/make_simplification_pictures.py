@@ -14,7 +14,9 @@
 
 Defaults: build/tools/genmesh, build/benchmarks/genmesh_benchmarks and
 ~/.cache/genmesh/data/meshes. Without a benchmarks executable (or with "-")
-only the pictures are made.
+only the pictures are made; a path ending in .json is read as the saved
+output of `genmesh_benchmarks --benchmark_filter=SimplificationCurve/
+--benchmark_format=json`.
 """
 import json
 import math
@@ -50,10 +52,14 @@ def pictures():
 
 
 def curve_data():
-    run = subprocess.run([BENCH, "--benchmark_filter=SimplificationCurve/", "--benchmark_format=json"],
-                         check=True, capture_output=True, text=True)
+    if BENCH.endswith(".json"):  # a saved run of the family
+        with open(BENCH) as f:
+            text = f.read()
+    else:
+        text = subprocess.run([BENCH, "--benchmark_filter=SimplificationCurve/", "--benchmark_format=json"],
+                              check=True, capture_output=True, text=True).stdout
     series = {}
-    for b in json.loads(run.stdout)["benchmarks"]:
+    for b in json.loads(text)["benchmarks"]:
         _, _, row = b["name"].split("/")[:3]
         series.setdefault(row, []).append((b["faces_out"], b["hausdorff"]))
     for row in series:

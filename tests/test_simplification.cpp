@@ -442,8 +442,9 @@ TYPED_TEST(Simplification, NoSelfIntersections) {
   EXPECT_FALSE(genmesh::does_self_intersect(g));
   EXPECT_LT(r.faces, soup.num_faces() / 4);
   EXPECT_TRUE(genmesh::check_mesh(g).ok());
-  if constexpr (std::is_same_v<TypeParam, genmesh_test::Surface_mesh>)
+  if constexpr (std::is_same_v<TypeParam, genmesh_test::Surface_mesh>) {
     EXPECT_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(g));
+  }
   TypeParam unguarded = mesh_of<TypeParam>(soup);
   genmesh::simplify(unguarded, {.target_ratio = 0.02, .prevent_self_intersections = false});
   EXPECT_TRUE(genmesh::does_self_intersect(unguarded));

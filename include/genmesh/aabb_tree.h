@@ -28,6 +28,7 @@
 // index and measures"); CGAL is not needed by this header.
 #pragma once
 
+#include <genmesh/detail/geometry/morton.h>
 #include <genmesh/concepts.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/geometry.h>
@@ -578,15 +579,6 @@ private:
         const float e = root_centers.hi[k] - root_centers.lo[k];
         scale[k] = e > 0 ? 2097151.0f / e : 0.0f;
       }
-      auto spread = [](std::uint64_t x) {
-        x &= 0x1fffff;
-        x = (x | x << 32) & 0x1f00000000ffffULL;
-        x = (x | x << 16) & 0x1f0000ff0000ffULL;
-        x = (x | x << 8) & 0x100f00f00f00f00fULL;
-        x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
-        x = (x | x << 2) & 0x1249249249249249ULL;
-        return x;
-      };
       struct Keyed {
         std::uint64_t code;
         std::uint32_t index;
@@ -595,7 +587,7 @@ private:
       for (std::size_t i = 0; i < n; ++i) {
         std::uint64_t c = 0;
         for (int k = 0; k < 3; ++k)
-          c |= spread(std::min<std::uint64_t>(
+          c |= detail::morton_spread(std::min<std::uint64_t>(
                    static_cast<std::uint64_t>((prims[i].c[k] - root_centers.lo[k]) * scale[k]), 2097151))
                << k;
         keys[i] = {c, static_cast<std::uint32_t>(i)};
