@@ -49,6 +49,7 @@
 
 #include "heap_counter.h"
 
+#include <cstdio>
 #include <ctime>
 #include <cmath>
 #include <cstdlib>
@@ -71,7 +72,7 @@ struct Om_traits : OpenMesh::DefaultTraits {
 using Om_tri = OpenMesh::TriMesh_ArrayKernelT<Om_traits>;
 namespace SMS = CGAL::Surface_mesh_simplification;
 
-enum class Input { armadillo_loop2, shark };
+enum class Input { armadillo_loop2, shark, armadillo };
 
 std::filesystem::path mesh_path(const char* name) {
   const char* dir = std::getenv("GENMESH_DATA_DIR");
@@ -86,7 +87,8 @@ const genmesh::Polygon_soup& soup(Input in) {
     return genmesh::to_soup(g);
   }();
   static const genmesh::Polygon_soup shark = genmesh::read_soup(mesh_path("mech-holes-shark.off"));
-  return in == Input::armadillo_loop2 ? armadillo : shark;
+  static const genmesh::Polygon_soup raw = genmesh::read_soup(mesh_path("armadillo.off"));
+  return in == Input::armadillo_loop2 ? armadillo : in == Input::shark ? shark : raw;
 }
 
 // A soup as a Surface_mesh, duplicating non-manifold vertices (for measuring
@@ -100,7 +102,8 @@ Surface_mesh to_surface_mesh(const genmesh::Polygon_soup& s) {
 const Surface_mesh& input_sm(Input in) {
   static const Surface_mesh a = to_surface_mesh(soup(Input::armadillo_loop2));
   static const Surface_mesh b = to_surface_mesh(soup(Input::shark));
-  return in == Input::armadillo_loop2 ? a : b;
+  static const Surface_mesh c = to_surface_mesh(soup(Input::armadillo));
+  return in == Input::armadillo_loop2 ? a : in == Input::shark ? b : c;
 }
 
 double diagonal(const genmesh::Polygon_soup& s) {
@@ -281,6 +284,19 @@ void meshopt_row(benchmark::State& state, Input in, double ratio) {
 }
 #endif
 
+// One row: run once, timed by hand (CPU time of the algorithm).
+template <class Fn>
+void register_row(const std::string& name, Fn fn) {
+  benchmark::RegisterBenchmark(name.c_str(),
+                               [name, fn](benchmark::State& s) {
+                                 current_row = name;
+                                 fn(s);
+                               })
+      ->Unit(benchmark::kMillisecond)
+      ->UseManualTime()
+      ->Iterations(1);
+}
+
 void register_all() {
   struct Case {
     const char* name;
@@ -291,15 +307,7 @@ void register_all() {
                        Case{"armadillo832k_to1pc", Input::armadillo_loop2, 0.01},
                        Case{"shark_to10pc", Input::shark, 0.1}}) {
     auto reg = [&](const std::string& row, auto fn) {
-      const std::string name = "Simplification/" + std::string(c.name) + "/" + row;
-      benchmark::RegisterBenchmark(name.c_str(),
-                                   [name, fn](benchmark::State& s) {
-                                     current_row = name;
-                                     fn(s);
-                                   })
-          ->Unit(benchmark::kMillisecond)
-          ->UseManualTime()
-          ->Iterations(1);
+      register_row("Simplification/" + std::string(c.name) + "/" + row, fn);
     };
     const Input in = c.in;
     const double r = c.ratio;
@@ -324,6 +332,27 @@ void register_all() {
   }
 }
 
-const bool registered = (register_all(), true);
+// The error-versus-face-count curve of docs/simplification.md (drawn by
+// docs/make_simplification_pictures.py from this family's JSON output):
+// armadillo.off (52k faces) at ratios from 50% to 0.5%, genmesh (GH plane
+// quadrics, guard on), CGAL's GH plane policies, meshoptimizer.
+void register_curve() {
+  for (const double r : {0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005}) {
+    auto reg = [&](const std::string& row, auto fn) {
+      char ratio[32];
+      std::snprintf(ratio, sizeof ratio, "%g", r);
+      register_row("SimplificationCurve/" + std::string(ratio) + "/" + row, fn);
+    };
+    reg("genmesh", [=](benchmark::State& s) { genmesh_row<Halfedge_mesh>(s, Input::armadillo, r); });
+    reg("CGAL_GH_plane", [=](benchmark::State& s) {
+      cgal_row<SMS::GarlandHeckbert_plane_policies<Surface_mesh, Kernel>>(s, Input::armadillo, r);
+    });
+#ifdef GENMESH_HAVE_MESHOPTIMIZER
+    reg("meshoptimizer", [=](benchmark::State& s) { meshopt_row(s, Input::armadillo, r); });
+#endif
+  }
+}
+
+const bool registered = (register_all(), register_curve(), true);
 
 } // namespace

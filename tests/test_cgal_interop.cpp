@@ -13,6 +13,7 @@
 #include <genmesh/adaptors/openmesh.h>
 #include <genmesh/concepts.h>
 #include <genmesh/generators.h>
+#include <genmesh/mesh_check.h>
 #include <genmesh/remeshing.h>
 #include <genmesh/simplification.h>
 #include <genmesh/subdivision.h>
@@ -992,6 +993,14 @@ bool all_triangles(const genmesh::Polygon_soup& s) {
     if (s.face_size(f) != 3) return false;
   return true;
 }
+
+// Loop, Catmull-Clark, butterfly and midpoint refine these in place through
+// the generic bulk append (no genmesh_native_append_elements): this test is
+// what runs that fallback.
+static_assert(genmesh::detail::subdivision::In_place_refinable<Polyhedron_with_ids> &&
+              !genmesh::detail::subdivision::Has_native_append<Polyhedron_with_ids>);
+static_assert(genmesh::detail::subdivision::In_place_refinable<Om_poly_d> &&
+              !genmesh::detail::subdivision::Has_native_append<Om_poly_d>);
 
 TEST(CgalToGenmesh, EverySchemeOnPolyhedronAndOpenMeshEqualsHalfedgeMesh) {
   for (const auto& in : subdivision_inputs()) {

@@ -407,6 +407,17 @@ TYPED_TEST(Simplification, MinAngleAndMaxValence) {
   genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(soup);
   genmesh::simplify(ref, {.target_ratio = 0.05, .max_valence = 7});
   expect_same_soup(canonical_of(h), canonical_of(ref), "max_valence");
+  // .max_aspect_ratio: no face of the result above 2 (the input's worst is
+  // about 1.1); plane quadrics alone go above.
+  auto worst_aspect = [](const auto& m) {
+    return genmesh::triangle_quality(m).max_aspect_ratio;
+  };
+  ASSERT_LT(worst_aspect(mesh_of<TypeParam>(soup)), 2.0);
+  TypeParam k = mesh_of<TypeParam>(soup);
+  const auto rk = genmesh::simplify(k, {.target_ratio = 0.05, .max_aspect_ratio = 2.0});
+  EXPECT_EQ(rk.stop_reason, genmesh::Stop_reason::target_faces);
+  EXPECT_LE(worst_aspect(k), 2.0);
+  EXPECT_GT(worst_aspect(free_mesh), 2.0);
 }
 
 // Two concentric spheres 3% apart (the inner one facing inwards): coarse
@@ -545,6 +556,121 @@ TYPED_TEST(Simplification, ConstrainedEdgesStay) {
     if (a.y() == 0.5 && b.y() == 0.5) length += (b - a).norm();
   }
   EXPECT_NEAR(length, 1.0, 1e-12);
+}
+
+// A per-vertex colour carried by linear interpolation along each collapsed
+// edge (what a user does without attribute-aware quadrics).
+template <class G>
+struct Carry_colour : genmesh::Mutation_visitor {
+  std::vector<double>* colour; // by vertex index
+  double pending = 0;
+  static std::size_t index(genmesh::vertex_descriptor_t<G> v, const G& g) {
+    return static_cast<std::size_t>(get(get(genmesh::vertex_index, g), v));
+  }
+  static Eigen::Vector3d point(genmesh::vertex_descriptor_t<G> v, const G& g) {
+    return genmesh::to_eigen(genmesh::point_t<G>(get(get(genmesh::vertex_point, g), v)));
+  }
+  void on_collapse_placement(genmesh::halfedge_descriptor_t<G> h, const Eigen::Vector3d& x, double, const G& g) {
+    const Eigen::Vector3d a = point(source(h, g), g), b = point(target(h, g), g);
+    const double t = std::clamp((x - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+    pending = (1 - t) * (*colour)[index(source(h, g), g)] + t * (*colour)[index(target(h, g), g)];
+  }
+  void on_collapse(genmesh::vertex_descriptor_t<G> v, const G& g) { (*colour)[index(v, g)] = pending; }
+};
+
+// The RMS difference between the colour of each input vertex and the colour
+// the simplified flat mesh g (in z = 0) interpolates at its point (in the
+// face that holds it: the one whose smallest barycentric coordinate is
+// largest, clamped).
+template <class G>
+double colour_rms(const G& g, const std::vector<double>& colour, const Polygon_soup& in,
+                  const std::vector<double>& colour_in) {
+  struct Tri {
+    Eigen::Vector2d p[3];
+    double c[3];
+  };
+  std::vector<Tri> tris;
+  for (auto f : faces(g)) {
+    Tri t;
+    auto h = halfedge(f, g);
+    for (int i = 0; i < 3; ++i, h = next(h, g)) {
+      t.p[i] = Carry_colour<G>::point(target(h, g), g).template head<2>();
+      t.c[i] = colour[Carry_colour<G>::index(target(h, g), g)];
+    }
+    tris.push_back(t);
+  }
+  double sum = 0;
+  for (std::size_t v = 0; v < in.points.size(); ++v) {
+    const Eigen::Vector2d p(in.points[v][0], in.points[v][1]);
+    double best = -std::numeric_limits<double>::infinity(), value = 0;
+    for (const Tri& t : tris) {
+      const Eigen::Vector2d e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0], d = p - t.p[0];
+      const double det = e1.x() * e2.y() - e1.y() * e2.x();
+      const double u = (d.x() * e2.y() - d.y() * e2.x()) / det, w = (e1.x() * d.y() - e1.y() * d.x()) / det;
+      const double l[3] = {1 - u - w, u, w};
+      const double m = std::min({l[0], l[1], l[2]});
+      if (m > best) {
+        best = m;
+        double c[3], s = 0;
+        for (int i = 0; i < 3; ++i) s += c[i] = std::max(l[i], 0.0);
+        value = (c[0] * t.c[0] + c[1] * t.c[1] + c[2] * t.c[2]) / s;
+      }
+    }
+    sum += (value - colour_in[v]) * (value - colour_in[v]);
+  }
+  return std::sqrt(sum / static_cast<double>(in.points.size()));
+}
+
+// Attribute-aware quadrics keep a colour seam: on a flat grid coloured 0
+// below a slanted line and 1 above it, plane quadrics see no cost anywhere
+// and smear the seam (colours carried by interpolation); Attribute_quadrics
+// keeps vertices along it and gives the survivors their best colours. Same
+// soup and colours on every backend.
+TYPED_TEST(Simplification, AttributeQuadricsKeepAColourSeam) {
+  const Polygon_soup in = genmesh::make_grid(24, 24);
+  std::vector<double> colour_in(in.points.size());
+  for (std::size_t v = 0; v < in.points.size(); ++v)
+    colour_in[v] = in.points[v][1] > 0.3 + 0.35 * in.points[v][0] ? 1.0 : 0.0;
+  auto with_attributes = [&]<class G>(G& g, std::vector<double>& colour) {
+    colour = colour_in;
+    genmesh::Attribute_quadrics a{.dimension = 1,
+                                  .read = [&](std::size_t v, double* out) { *out = colour[v]; },
+                                  .write = [&](std::size_t v, const double* values) { colour[v] = *values; },
+                                  .weights = {0.2}};
+    return genmesh::simplify(g, genmesh::Simplification_options<genmesh::Attribute_quadrics>{.target_ratio = 0.15,
+                                                                                              .policy = a});
+  };
+  TypeParam g = mesh_of<TypeParam>(in);
+  const auto before = genmesh::check_mesh(g);
+  std::vector<double> colour;
+  const auto r = with_attributes(g, colour);
+  expect_invariants(g, before, "attribute quadrics");
+  EXPECT_EQ(r.stop_reason, genmesh::Stop_reason::target_faces);
+  const double ours = colour_rms(g, colour, in, colour_in);
+
+  TypeParam h = mesh_of<TypeParam>(in);
+  std::vector<double> carried = colour_in;
+  Carry_colour<TypeParam> carry;
+  carry.colour = &carried;
+  genmesh::simplify(h, {.target_ratio = 0.15}, carry);
+  const double blind = colour_rms(h, carried, in, colour_in);
+  EXPECT_LT(ours, 0.6 * blind) << "attribute quadrics " << ours << ", plane quadrics " << blind;
+
+  // Every backend: the same soup and the same colour at each point.
+  auto coloured_points = [](const auto& m, const std::vector<double>& c) {
+    std::vector<std::tuple<double, double, double, double>> v;
+    for (auto x : vertices(m)) {
+      const Eigen::Vector3d p = Carry_colour<std::remove_cvref_t<decltype(m)>>::point(x, m);
+      v.emplace_back(p.x(), p.y(), p.z(), c[Carry_colour<std::remove_cvref_t<decltype(m)>>::index(x, m)]);
+    }
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(in);
+  std::vector<double> ref_colour;
+  with_attributes(ref, ref_colour);
+  expect_same_soup(canonical_of(g), canonical_of(ref), "attribute quadrics");
+  EXPECT_EQ(coloured_points(g, colour), coloured_points(ref, ref_colour));
 }
 
 // ---------------------------------------------------------------------------

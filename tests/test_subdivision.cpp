@@ -35,8 +35,8 @@ using genmesh::Polygon_soup;
 using genmesh_test::Backends;
 using genmesh_test::mesh_of;
 
-// Loop and Catmull-Clark refine these in place; the incidence mesh (no
-// set_next) goes through a Halfedge_mesh copy.
+// Loop and Catmull-Clark refine these in place with set_next & co.; the
+// incidence mesh (no set_next) in place through its native local operations.
 static_assert(genmesh::detail::subdivision::In_place_refinable<genmesh_test::Halfedge_mesh>);
 static_assert(genmesh::detail::subdivision::In_place_refinable<genmesh_test::Surface_mesh>);
 static_assert(!genmesh::detail::subdivision::In_place_refinable<genmesh_test::Incidence_mesh>);
@@ -112,7 +112,7 @@ std::vector<double> sharpness_where(const G& g, Pick pick, double value);
 // A crease map of g (genmesh::make_crease_map) holding sharp, given in edge
 // iteration order (empty: all 0).
 template <class G>
-auto crease_map_of(const G& g, const std::vector<double>& sharp) {
+auto crease_map_of(G& g, const std::vector<double>& sharp) {
   auto m = genmesh::make_crease_map(g);
   std::size_t k = 0;
   if (!sharp.empty())
@@ -130,9 +130,9 @@ std::vector<double> sharpness_of(const G& g, const M& m) {
 
 // A corner map of g tagging the vertices with these iteration numbers.
 template <class G>
-auto corner_map_of(const G& g, const std::vector<std::uint32_t>& numbers) {
+auto corner_map_of(G& g, const std::vector<std::uint32_t>& numbers) {
   auto m = genmesh::make_corner_map(g);
-  std::vector<typename boost::graph_traits<G>::vertex_descriptor> vs;
+  std::vector<typename boost::graph_traits<std::remove_const_t<G>>::vertex_descriptor> vs;
   for (auto v : vertices(g)) vs.push_back(v);
   for (std::uint32_t n : numbers) put(m, vs.at(n), 1);
   return m;
@@ -1131,6 +1131,110 @@ TEST(SubdivisionNative, IncidenceMeshRefinesWithItsOwnOperations) {
     EXPECT_EQ(Eigen::SparseMatrix<int>(d1 * d0).norm(), 0);
     EXPECT_EQ(static_cast<std::size_t>(d0.rows()), static_cast<std::size_t>(num_edges(g)));
   }
+}
+
+// ---------------------------------------------------------------------------
+// The bulk append of the in-place refinement is native on Halfedge_mesh and
+// Surface_mesh (Polyhedron_3 and OpenMesh use the generic one:
+// test_cgal_interop.cpp). A native append must name exactly the elements the
+// generic one makes, in the same order — also when removed elements wait
+// for recycling, where both reuse the free slots first.
+
+template <class G>
+void expect_native_append_is_generic(G g, bool with_free_slots) {
+  namespace ds = genmesh::detail::subdivision;
+  static_assert(ds::Has_native_append<G>);
+  typename boost::graph_traits<G>::vertex_descriptor freed{};
+  typename boost::graph_traits<G>::face_descriptor freed_face{};
+  if (with_free_slots) {
+    freed = add_vertex(g);
+    freed_face = add_face(g);
+    remove_vertex(freed, g);
+    remove_edge(add_edge(g), g);
+    remove_face(freed_face, g);
+  }
+  G copy = g;
+  const auto a = ds::append_elements(g, 3, 4, 2);
+  const auto b = ds::generic_append_elements(copy, 3, 4, 2);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(a.vertex(k), b.vertex(k)) << k;
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(a.halfedge(k, 0), b.halfedge(k, 0)) << k;
+    EXPECT_EQ(a.halfedge(k, 1), b.halfedge(k, 1)) << k;
+    EXPECT_EQ(a.halfedge(k, 1), opposite(a.halfedge(k, 0), g)) << k;
+  }
+  for (std::size_t k = 0; k < 2; ++k) EXPECT_EQ(a.face(k), b.face(k)) << k;
+  EXPECT_EQ(index_bound(genmesh::vertex_index, g), index_bound(genmesh::vertex_index, copy));
+  EXPECT_EQ(index_bound(genmesh::halfedge_index, g), index_bound(genmesh::halfedge_index, copy));
+  EXPECT_EQ(index_bound(genmesh::face_index, g), index_bound(genmesh::face_index, copy));
+  if (with_free_slots) { // the freed slots are reused first
+    EXPECT_EQ(a.vertex(0), freed);
+    EXPECT_EQ(a.face(0), freed_face);
+  }
+}
+
+TEST(SubdivisionNative, NativeAppendGivesTheGenericElements) {
+  for (bool free_slots : {false, true}) {
+    SCOPED_TRACE(free_slots ? "with free slots" : "dense");
+    expect_native_append_is_generic(mesh_of<genmesh_test::Halfedge_mesh>(genmesh::make_cube()), free_slots);
+    expect_native_append_is_generic(mesh_of<genmesh_test::Surface_mesh>(genmesh::make_cube()), free_slots);
+  }
+}
+
+// √3, Doo-Sabin and midpoint on polygons build each level's mesh from a soup
+// (detail::link_soup into a fresh mesh of the same type). Incidence_mesh has
+// no set_next for the generic linking, so on it that can only be its own
+// genmesh_native_link_soup: the schemes run on its own code, not on a copy,
+// and give Halfedge_mesh's soups.
+TEST(SubdivisionNative, RebuildingSchemesLinkNativelyOnIncidenceMesh) {
+  static_assert(genmesh::detail::Has_native_link_soup<genmesh_test::Incidence_mesh> &&
+                !genmesh::MutableFaceGraph<genmesh_test::Incidence_mesh>);
+  for (Scheme scheme : {Scheme::sqrt3, Scheme::doo_sabin, Scheme::midpoint}) {
+    SCOPED_TRACE(name(scheme));
+    const Polygon_soup soup = scheme == Scheme::sqrt3 ? genmesh::make_icosphere(1) : genmesh::make_cube();
+    auto i = mesh_of<genmesh_test::Incidence_mesh>(soup);
+    auto h = mesh_of<genmesh_test::Halfedge_mesh>(soup);
+    run(scheme, i, 2);
+    run(scheme, h, 2);
+    EXPECT_EQ(genmesh::canonical(genmesh::to_soup(i)), genmesh::canonical(genmesh::to_soup(h)));
+    EXPECT_GT(num_faces(i), soup.num_faces());
+    EXPECT_TRUE(genmesh::check_mesh(i).ok());
+    const Eigen::SparseMatrix<int> d0 = i.d0(), d1 = i.d1();
+    EXPECT_EQ(Eigen::SparseMatrix<int>(d1 * d0).norm(), 0);
+  }
+}
+
+// Crease and corner maps are scratch properties of the mesh: on genmesh's
+// meshes and Surface_mesh they live in the mesh's own property system (so
+// they grow and are compacted with it), and leave it with their last copy.
+TEST(SubdivisionNative, CreaseMapsLiveInTheMeshsPropertySystem) {
+  auto h = mesh_of<genmesh_test::Halfedge_mesh>(genmesh::make_cube());
+  auto i = mesh_of<genmesh_test::Incidence_mesh>(genmesh::make_cube());
+  auto s = mesh_of<genmesh_test::Surface_mesh>(genmesh::make_cube());
+  // anonymous properties are not named: their bytes show them
+  const std::size_t hb = h.memory_bytes(), ib = i.memory_bytes();
+  const std::size_t se = s.properties<genmesh_test::Surface_mesh::Edge_index>().size();
+  {
+    auto hc = genmesh::make_crease_map(h);
+    auto ic = genmesh::make_crease_map(i);
+    auto sc = genmesh::make_crease_map(s);
+    auto hk = genmesh::make_corner_map(h);
+    EXPECT_GE(h.memory_bytes(), hb + 12 * sizeof(double) + 8);
+    EXPECT_GE(i.memory_bytes(), ib + 12 * sizeof(double));
+    EXPECT_EQ(s.properties<genmesh_test::Surface_mesh::Edge_index>().size(), se + 1);
+    for (auto e : edges(h)) put(hc, e, 2.0);
+    genmesh::catmull_clark_subdivision(h, genmesh::Catmull_clark_options{.crease_map = hc, .corner_map = hk});
+    std::size_t sharp = 0, other = 0; // the halves of the 12 old edges get 2 − 1, new edges 0
+    for (auto e : edges(h)) {
+      const double x = get(hc, e);
+      if (x == 1.0) ++sharp;
+      else if (x != 0.0) ++other;
+    }
+    EXPECT_EQ(sharp, 24u);
+    EXPECT_EQ(other, 0u);
+    (void)ic, (void)sc;
+  }
+  EXPECT_EQ(i.memory_bytes(), ib);
+  EXPECT_EQ(s.properties<genmesh_test::Surface_mesh::Edge_index>().size(), se);
 }
 
 } // namespace

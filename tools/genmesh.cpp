@@ -679,12 +679,18 @@ Level_counts next_level(const Level_counts& c, const std::string& scheme, int le
   return n;
 }
 
-// Peak memory of the last level, with the output soup that writing needs:
-// bytes per element fitted to peak RSS of every scheme on each backend
-// (docs/cli.md "Limits").
-double predicted_bytes(const Level_counts& c, const std::string& backend) {
-  const double per = backend == "incidence" ? 1.65 : 1.0;
-  return per * (110 * c.v + 60 * c.e + 60 * c.f);
+// Peak memory of the whole program at the last level (write_mesh writes
+// from the mesh, no output copy): bytes per element fitted to the peak RSS
+// of every scheme on each backend, separately for the schemes refined in
+// place (Loop, butterfly, Catmull-Clark, midpoint on triangles) and those
+// that rebuild the mesh from a soup each level (√3, Doo-Sabin, midpoint on
+// polygons), each a few per cent above every measurement (docs/cli.md
+// "Limits").
+double predicted_bytes(const Level_counts& c, const std::string& backend, bool in_place) {
+  const double base = 5e6; // the program, the input
+  if (backend == "incidence")
+    return base + (in_place ? 40 * c.v + 60 * c.e + 150 * c.f : 90 * c.v + 140 * c.e + 50 * c.f);
+  return base + (in_place ? 40 * c.v + 40 * c.e + 12 * c.f : 90 * c.v + 50 * c.e + 50 * c.f);
 }
 
 std::uint64_t physical_memory() {
@@ -701,12 +707,14 @@ void check_subdivision_fits(const genmesh::Polygon_soup& soup, const Args& a) {
   // A triangle scheme on other faces refuses at once (exit 2, naming the face).
   if ((a.scheme == "loop" || a.scheme == "butterfly" || a.scheme == "sqrt3") && c.f3 != c.f) return;
   const std::uint64_t limit = a.max_memory ? *a.max_memory : physical_memory() / 2;
+  const bool in_place = a.scheme == "loop" || a.scheme == "butterfly" || a.scheme == "catmull-clark" ||
+                        (a.scheme == "midpoint" && c.f3 == c.f);
   std::ostringstream levels;
   for (int level = 0; level < a.levels; ++level) {
     c = next_level(c, a.scheme, level);
     levels << "\n  level " << level + 1 << ": " << std::llround(c.v) << " vertices, " << std::llround(c.e)
            << " edges, " << std::llround(c.f) << " faces";
-    const double bytes = predicted_bytes(c, a.backend);
+    const double bytes = predicted_bytes(c, a.backend, in_place);
     const bool too_many = 2 * c.e >= 4294967295.0 || c.v >= 4294967295.0 || c.h >= 4294967295.0;
     if (too_many || bytes > static_cast<double>(limit)) {
       throw too_large_error(

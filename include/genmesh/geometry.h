@@ -112,6 +112,17 @@ inline Eigen::Vector3d triangle_normal(std::size_t ia, const Eigen::Vector3d& a,
   return triangle_normal(c, a, b);
 }
 
+/// The aspect ratio of triangle abc: circumradius / (2 · inradius), 1 for
+/// the equilateral triangle, growing without bound as it degenerates;
+/// infinity for a degenerate (zero-area) triangle.
+inline double triangle_aspect_ratio(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
+  const double area = 0.5 * triangle_normal(a, b, c).norm();
+  if (!(area > 0)) return std::numeric_limits<double>::infinity();
+  // R = abc / (4 area), r = 2 area / (a + b + c).
+  return (la * lb * lc / (4 * area)) / (2 * (2 * area / (la + lb + lc)));
+}
+
 /// v / |v|, or zero when |v| is zero (a degenerate face has no direction).
 inline Eigen::Vector3d normalized_or_zero(const Eigen::Vector3d& v) {
   const double l = v.norm();

@@ -338,11 +338,8 @@ inline constexpr struct Triangle_quality_fn {
         ++q.triangles;
         const Eigen::Vector3d a = point(target(h0, g), g, pm), b = point(target(next(h0, g), g), g, pm),
                               c = point(source(h0, g), g, pm);
-        const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
-        const double area = 0.5 * triangle_normal(a, b, c).norm();
-        if (area > 0) {
-          // R = abc / (4 area), r = 2 area / (a + b + c).
-          const double ratio = (la * lb * lc / (4 * area)) / (2 * (2 * area / (la + lb + lc)));
+        const double ratio = triangle_aspect_ratio(a, b, c);
+        if (std::isfinite(ratio)) {
           rmin = std::min(rmin, ratio), rmax = std::max(rmax, ratio);
           aspect_sum += ratio;
           ++aspects;

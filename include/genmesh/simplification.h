@@ -41,6 +41,7 @@
 //   collapse changes a vertex next to one of its ends (the test's inputs).
 #pragma once
 
+#include <genmesh/simplification/attribute_quadrics.h>
 #include <genmesh/simplification/lindstrom_turk.h>
 #include <genmesh/simplification/quadric.h>
 #include <genmesh/visitor.h>
@@ -111,6 +112,11 @@ struct Simplification_options {
   /// Smallest angle, degrees (at most 60), of a face a collapse changes; a
   /// face already worse may stay as bad but not get worse. 0: no limit.
   double min_angle = 0.0;
+  /// Largest aspect ratio (circumradius / (2 · inradius), 1 for the
+  /// equilateral triangle: genmesh::triangle_aspect_ratio) of a face a
+  /// collapse changes; a face already worse may stay as bad but not get
+  /// worse. 0: no limit.
+  double max_aspect_ratio = 0.0;
   /// Largest valence the surviving vertex of a collapse may get. 0: no limit.
   std::size_t max_valence = 0;
   /// Feature lines: interior edges whose two faces' normals make at least

@@ -188,6 +188,71 @@ auto genmesh_native_scratch_property(Tag, CGAL::Surface_mesh<P>& sm, const T& in
   return Surface_mesh_scratch_property<P, Key, T>(sm, init);
 }
 
+/// The elements added by one genmesh_native_append_elements call on a
+/// Surface_mesh: named by arithmetic from the first new index when they went
+/// to the end of the index ranges, kept in tables only when free slots were
+/// recycled.
+template <class P>
+struct Surface_mesh_appended {
+  using Mesh = CGAL::Surface_mesh<P>;
+  using V = typename Mesh::Vertex_index;
+  using H = typename Mesh::Halfedge_index;
+  using F = typename Mesh::Face_index;
+  using size_type = typename Mesh::size_type;
+  size_type first_vertex = 0, first_edge = 0, first_face = 0;
+  std::vector<V> vs; ///< only when recycled slots were used
+  std::vector<H> hs;
+  std::vector<F> fs;
+
+  V vertex(std::size_t k) const { return vs.empty() ? V(static_cast<size_type>(first_vertex + k)) : vs[k]; }
+  /// Halfedge i (0 or 1) of the k-th new edge; the two are opposite.
+  H halfedge(std::size_t k, unsigned i) const {
+    const size_type h = hs.empty() ? static_cast<size_type>(2 * (first_edge + k)) : static_cast<size_type>(hs[k]);
+    return H(h ^ i);
+  }
+  F face(std::size_t k) const { return fs.empty() ? F(static_cast<size_type>(first_face + k)) : fs[k]; }
+};
+
+/// The bulk append of the in-place subdivision (found by ADL; the generic
+/// fallback is in <genmesh/subdivision/detail/in_place.h>): nv isolated
+/// vertices, ne edges with null connectivity, nf faces without a halfedge,
+/// as that many add_vertex()/add_edge()/add_face() calls after one reserve.
+/// When nothing waits for recycling the new elements take the next indices,
+/// so they are named by arithmetic and no descriptor table is kept (the
+/// generic fallback keeps one per element).
+template <class P>
+Surface_mesh_appended<P> genmesh_native_append_elements(CGAL::Surface_mesh<P>& sm, std::size_t nv, std::size_t ne,
+                                                        std::size_t nf) {
+  using size_type = typename CGAL::Surface_mesh<P>::size_type;
+  Surface_mesh_appended<P> a;
+  a.first_vertex = sm.num_vertices();
+  a.first_edge = sm.num_edges();
+  a.first_face = sm.num_faces();
+  sm.reserve(static_cast<size_type>(sm.num_vertices() + nv), static_cast<size_type>(sm.num_edges() + ne),
+             static_cast<size_type>(sm.num_faces() + nf));
+  const bool recycled = sm.does_recycle_garbage() && (sm.number_of_removed_vertices() != 0 ||
+                                                      sm.number_of_removed_edges() != 0 ||
+                                                      sm.number_of_removed_faces() != 0);
+  if (recycled) {
+    a.vs.reserve(nv);
+    a.hs.reserve(ne);
+    a.fs.reserve(nf);
+  }
+  for (std::size_t k = 0; k < nv; ++k) {
+    const auto v = sm.add_vertex();
+    if (recycled) a.vs.push_back(v);
+  }
+  for (std::size_t k = 0; k < ne; ++k) {
+    const auto h = sm.add_edge();
+    if (recycled) a.hs.push_back(h);
+  }
+  for (std::size_t k = 0; k < nf; ++k) {
+    const auto f = sm.add_face();
+    if (recycled) a.fs.push_back(f);
+  }
+  return a;
+}
+
 // ---- CGAL::Polyhedron_3 ----------------------------------------------------
 
 namespace detail {

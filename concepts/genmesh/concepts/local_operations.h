@@ -48,10 +48,14 @@
 // rule stated here and the dispatch in local_operations.h cannot drift
 // apart unnoticed.
 //
-// To come: the bulk "append these elements" operation of the subdivision
-// work joins this table when it lands on main (it already has a generic
-// fallback, so it adds a native expression to NativeLocalOperations and
-// nothing to the MutableFaceGraph branch).
+// The bulk "append these elements" operation of the in-place subdivision,
+// genmesh_native_append_elements(g, nv, ne, nf), is not part of this table:
+// it appends elements with null connectivity for set_next & co. to link, so
+// it only means something on the MutableFaceGraph branch, where it is an
+// optional speed-up with a generic fallback
+// (<genmesh/subdivision/detail/in_place.h>; native on Halfedge_mesh and
+// CGAL::Surface_mesh). A backend without set_next refines through the
+// native operations above.
 #pragma once
 
 #include <genmesh/concepts/descriptor.h>

@@ -4,8 +4,9 @@
 //
 // A memoryless policy keeps no per-vertex data: it recomputes cost and
 // placement from the current mesh around the edge each time (Lindstrom &
-// Turk 1998). simplify() builds the profile in a canonical order (sorted by
-// vertex indices), so sums over it round the same way on every backend.
+// Turk 1998). simplify() builds the profile in a canonical order (the fans
+// of the two ends walked from the edge, as the faces' orientation turns), so
+// sums over it round the same way on every backend.
 //
 // Writing a memoryless policy: a type with
 //   static constexpr bool memoryless = true;
@@ -32,13 +33,15 @@ struct Profile_border_edge {
 /// The neighbourhood of edge (p0, p1) before its collapse.
 struct Collapse_profile {
   Eigen::Vector3d p0, p1; ///< the edge's ends, p0 the one with the lower vertex index
-  /// Every face around p0 or p1, once (the two faces of the edge included),
-  /// sorted by their corners' vertex indices, each starting at its lowest.
+  /// Every face around p0 or p1, once (the two faces of the edge included):
+  /// p0's fan from the face left of p1 → p0, then p1's from the face left of
+  /// p0 → p1, turning as the faces are oriented; each face starts at its
+  /// corner of lowest vertex index.
   std::span<const Profile_triangle> triangles;
-  /// Every border edge at p0 or p1, once, sorted by (s, t) vertex index;
-  /// empty with Border_mode::free.
+  /// Every border edge at p0 or p1, once, in the same walk order; empty with
+  /// Border_mode::free.
   std::span<const Profile_border_edge> border_edges;
-  /// The neighbours of p0 and p1 (neither end), once, sorted by vertex index.
+  /// The neighbours of p0 and p1 (neither end), once, in the same walk order.
   std::span<const Eigen::Vector3d> link;
 };
 

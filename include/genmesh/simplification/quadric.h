@@ -15,6 +15,8 @@
 //   isotropic variant: each plane's normal and point are Gaussian; A gains
 //   σ_n² I, so it is always invertible and placement needs no fallback.
 // - Edge_length: cost = squared edge length, placement at the midpoint.
+// - Attribute_quadrics (its own header): Garland–Heckbert 1998 quadrics over
+//   position and user per-vertex attributes.
 //
 // Writing a policy: a type with
 //   using Vertex_data = ...;                         // regular, default-constructible
@@ -24,7 +26,11 @@
 // and optionally (defaults: x + y, and {sum(x), x} for a callable Vertex_data)
 //   Vertex_data merge(const Vertex_data&, const Vertex_data&) const;
 //   Placement fixed(const Vertex_data& sum, pa, pb, x) const; // cost of collapsing a–b onto x
-// (points are Eigen::Vector3d; merge must be commutative bit for bit, so
+//   Vertex_data face(ia, a, ib, b, ic, c) const;    // instead of face(a, b, c): with vertex indices
+//   void collapsed(survivor_index, const Vertex_data& sum, x) const; // after each collapse
+// (the last two let a policy read and write per-vertex data: see
+// Attribute_quadrics in <genmesh/simplification/attribute_quadrics.h>;
+// points are Eigen::Vector3d; merge must be commutative bit for bit, so
 // that every backend computes the same numbers.)
 #pragma once
 

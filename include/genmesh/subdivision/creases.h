@@ -3,20 +3,22 @@
 //
 // The schemes read sharpness per edge through a property map and write the
 // refined mesh's back into it; files and users name creases by their end
-// vertices. make_crease_map(g) / make_corner_map(g) give maps of g that grow
-// with the elements a subdivision adds (boost::vector_property_map over g's
-// index maps, on every backend); crease_map(g, creases) fills one from
-// vertex pairs, vertices numbered in vertex iteration order (the numbering
-// of to_soup() and of the file the mesh was read from).
+// vertices. make_crease_map(g) / make_corner_map(g) give scratch properties
+// of g (<genmesh/properties.h>): in g's own property system where it has one
+// (genmesh's meshes, Surface_mesh; a vector over g's index map otherwise),
+// growing with the elements a subdivision adds, removed with their last
+// copy. crease_map(g, creases) fills one from vertex pairs, vertices
+// numbered in vertex iteration order (the numbering of to_soup() and of the
+// file the mesh was read from).
 #pragma once
 
+#include <genmesh/properties.h>
 #include <genmesh/subdivision/detail/refinement.h>
-
-#include <boost/property_map/vector_property_map.hpp>
 
 #include <cstdint>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -66,30 +68,28 @@ std::vector<double> crease_sharpness(const G& g, std::span<const Crease> creases
   return out;
 }
 
-/// An edge → sharpness map of g for .crease_map, every edge 0 (smooth). It
-/// is indexed by g's edge index and grows with the edges added later.
+/// An edge → sharpness map of g for .crease_map, every edge 0 (smooth): a
+/// scratch property of g, so it grows with the edges added later (on a
+/// const g, the generic storage of <genmesh/properties.h>).
 template <class G>
-  requires detail::subdivision::Subdividable<G>
-auto make_crease_map(const G& g) {
-  auto index = get(edge_index, g);
-  return boost::vector_property_map<double, decltype(index)>(static_cast<unsigned>(index_bound(edge_index, g)), index);
+  requires detail::subdivision::Subdividable<std::remove_const_t<G>>
+auto make_crease_map(G& g) {
+  return scratch_property(edge_index, g, 0.0);
 }
 
 /// A vertex → bool map of g for .corner_map, no vertex tagged (a byte per
-/// vertex index, converted to bool); grows with the vertices added later.
+/// vertex, converted to bool); a scratch property of g, as make_crease_map.
 template <class G>
-  requires detail::subdivision::Subdividable<G>
-auto make_corner_map(const G& g) {
-  auto index = get(vertex_index, g);
-  return boost::vector_property_map<unsigned char, decltype(index)>(
-      static_cast<unsigned>(index_bound(vertex_index, g)), index);
+  requires detail::subdivision::Subdividable<std::remove_const_t<G>>
+auto make_corner_map(G& g) {
+  return scratch_property(vertex_index, g, static_cast<unsigned char>(0));
 }
 
 /// make_crease_map(g) holding the creases named by their end vertices.
 /// Throws as crease_sharpness().
 template <class G>
-  requires detail::subdivision::Subdividable<G>
-auto crease_map(const G& g, std::span<const Crease> creases) {
+  requires detail::subdivision::Subdividable<std::remove_const_t<G>>
+auto crease_map(G& g, std::span<const Crease> creases) {
   const std::vector<double> sharp = crease_sharpness(g, creases);
   auto m = make_crease_map(g);
   std::size_t k = 0;

@@ -103,10 +103,9 @@ template <class G, class VertexPointMap = Default_map, class Visitor = Mutation_
 Subdivision_result doo_sabin_subdivision(G& g, const Doo_sabin_options<VertexPointMap>& options = {}, Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
   visitor.on_started(std::as_const(g));
-  std::vector<double> none;
   Subdivision_result r = ds::run_levels(
-      g, options.iterations, "doo_sabin_subdivision", 0, none,
-      [&](const ds::Snapshot& s, int) { return ds::Refined{ds::doo_sabin_level(s, visitor), {}}; }, ds::no_half,
+      g, options.iterations, "doo_sabin_subdivision", 0,
+      [&](const ds::Snapshot& s, int) { return ds::Refined{ds::doo_sabin_level(s, visitor), {}}; },
       visitor, options.vertex_point_map);
   visitor.on_finished(std::as_const(g));
   return r;

@@ -116,10 +116,9 @@ Subdivision_result midpoint_subdivision(G& g, const Midpoint_options<VertexPoint
         },
         ds::one_to_four_counts, visitor);
   } else {
-    std::vector<double> none;
     r = ds::run_levels(
-        g, options.iterations, "midpoint_subdivision", 0, none,
-        [&](const ds::Snapshot& s, int) { return ds::Refined{ds::midpoint_level(s, visitor), {}}; }, ds::no_half,
+        g, options.iterations, "midpoint_subdivision", 0,
+        [&](const ds::Snapshot& s, int) { return ds::Refined{ds::midpoint_level(s, visitor), {}}; },
         visitor, options.vertex_point_map);
   }
   visitor.on_finished(std::as_const(g));

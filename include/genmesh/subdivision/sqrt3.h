@@ -185,13 +185,12 @@ template <class G, class VertexPointMap = Default_map, class Visitor = Mutation_
 Subdivision_result sqrt3_subdivision(G& g, const Sqrt3_options<VertexPointMap>& options = {}, Visitor&& visitor = {}) {
   namespace ds = detail::subdivision;
   visitor.on_started(std::as_const(g));
-  std::vector<double> none;
   Subdivision_result r = ds::run_levels(
-      g, options.iterations, "sqrt3_subdivision", 3, none,
+      g, options.iterations, "sqrt3_subdivision", 3,
       [&](const ds::Snapshot& s, int i) {
         return ds::Refined{ds::sqrt3_level(s, options.boundary == Boundary_rule::smooth && i % 2 == 1, visitor), {}};
       },
-      ds::no_half, visitor, options.vertex_point_map);
+      visitor, options.vertex_point_map);
   visitor.on_finished(std::as_const(g));
   return r;
 }

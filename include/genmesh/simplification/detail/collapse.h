@@ -266,7 +266,10 @@ class Collapser {
     hint_.assign(vb, 0);
     refused_.assign(eb, 0);
     edesc_.assign(eb, E{});
-    if constexpr (memoryless) stamp_.assign(eb, 0);
+    if constexpr (memoryless) {
+      stamp_.assign(eb, 0);
+      link_seen_.assign(vb, 0);
+    }
     if (o_.is_locked)
       for (const V v : vertices(g_))
         if (o_.is_locked(vi(v))) locked_[vi(v)] = 1;
@@ -284,7 +287,11 @@ class Collapser {
       } else if (c < a && c < b) {
         std::tie(a, b, c) = std::make_tuple(c, a, b);
       }
-      const Data q = policy_.face(pos_[a], pos_[b], pos_[c]);
+      Data q;
+      if constexpr (requires { policy_.face(a, pos_[a], b, pos_[b], c, pos_[c]); })
+        q = policy_.face(a, pos_[a], b, pos_[b], c, pos_[c]); // a policy that reads attributes
+      else
+        q = policy_.face(pos_[a], pos_[b], pos_[c]);
       data_[a] = simplification::merge(policy_, data_[a], q);
       data_[b] = simplification::merge(policy_, data_[b], q);
       data_[c] = simplification::merge(policy_, data_[c], q);
@@ -424,48 +431,54 @@ class Collapser {
   }
 
   // The profile of h's edge, ends a < b (vertex indices), in the canonical
-  // order of Collapse_profile. Valid until the next call.
+  // order of Collapse_profile: the fan of a from the face left of b → a, then
+  // the fan of b from the face left of a → b (rotation follows the faces'
+  // orientation, the same on every backend), each element once. Valid until
+  // the next call.
   Collapse_profile profile(H h, std::size_t a, std::size_t b) {
-    tri_keys_.clear();
+    tris_.clear();
+    borders_.clear();
+    link_.clear();
+    if (++link_epoch_ == 0) { // the stamps wrapped
+      std::fill(link_seen_.begin(), link_seen_.end(), 0u);
+      link_epoch_ = 1;
+    }
+    const H ba = vi(target(h, g_)) == a ? h : opposite(h, g_);
+    const bool borders = o_.border != Border_mode::free;
+    auto add_border = [&](std::size_t s, std::size_t t) {
+      for (const auto& e : border_keys_)
+        if (e[0] == s && e[1] == t) return; // edge ab, seen from both ends
+      border_keys_.push_back({static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(t)});
+      borders_.push_back({pos_[s], pos_[t]});
+    };
     border_keys_.clear();
-    link_keys_.clear();
-    for (const V v : {source(h, g_), target(h, g_)}) {
-      const std::uint32_t iv = static_cast<std::uint32_t>(vi(v));
-      const H start = halfedge(v, g_);
+    for (int side = 0; side < 2; ++side) {
+      const H start = side == 0 ? ba : opposite(ba, g_);
+      const std::size_t iv = side == 0 ? a : b;
       H x = start;
       do {
         // x: u → v.
-        const V u = source(x, g_);
-        const auto iu = static_cast<std::uint32_t>(vi(u));
-        if (iu != a && iu != b) link_keys_.push_back(iu);
-        const H ox = opposite(x, g_);
+        const std::size_t iu = vi(source(x, g_));
+        if (iu != a && iu != b && link_seen_[iu] != link_epoch_) {
+          link_seen_[iu] = link_epoch_;
+          link_.push_back(pos_[iu]);
+        }
         if (!border(x)) {
-          // The face (v, w, u), rotated to start at its lowest index.
-          std::array<std::uint32_t, 3> t{iv, static_cast<std::uint32_t>(vi(target(next(x, g_), g_))), iu};
-          std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-          tri_keys_.push_back(t);
-          if (border(ox) && o_.border != Border_mode::free) border_keys_.push_back({iu, iv});
-        } else if (o_.border != Border_mode::free) {
-          border_keys_.push_back({iv, iu});
+          // The face (v, w, u), from its lowest index; b's fan skips the
+          // faces of the edge (they hold a).
+          const std::size_t iw = vi(target(next(x, g_), g_));
+          if (side == 0 || (iu != a && iw != a)) {
+            if (iv < iw && iv < iu) tris_.push_back({pos_[iv], pos_[iw], pos_[iu]});
+            else if (iw < iu) tris_.push_back({pos_[iw], pos_[iu], pos_[iv]});
+            else tris_.push_back({pos_[iu], pos_[iv], pos_[iw]});
+          }
+          if (borders && border(opposite(x, g_))) add_border(iu, iv);
+        } else if (borders) {
+          add_border(iv, iu);
         }
         x = opposite(next(x, g_), g_);
       } while (x != start);
     }
-    auto sort_unique = [](auto& keys) {
-      std::sort(keys.begin(), keys.end());
-      keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    };
-    sort_unique(tri_keys_);
-    sort_unique(border_keys_);
-    sort_unique(link_keys_);
-    tris_.resize(tri_keys_.size());
-    for (std::size_t i = 0; i < tri_keys_.size(); ++i)
-      tris_[i] = {pos_[tri_keys_[i][0]], pos_[tri_keys_[i][1]], pos_[tri_keys_[i][2]]};
-    borders_.resize(border_keys_.size());
-    for (std::size_t i = 0; i < border_keys_.size(); ++i)
-      borders_[i] = {pos_[border_keys_[i][0]], pos_[border_keys_[i][1]]};
-    link_.resize(link_keys_.size());
-    for (std::size_t i = 0; i < link_keys_.size(); ++i) link_[i] = pos_[link_keys_[i]];
     return {pos_[a], pos_[b], tris_, borders_, link_};
   }
 
@@ -500,6 +513,11 @@ class Collapser {
           if (l0 > 0) {
             const double d = n0.dot(n1);
             if (!(d > 0) || d * d < cos_max_ * cos_max_ * l0 * l1) return false;
+          }
+          if (o_.max_aspect_ratio > 0) {
+            // No face above .max_aspect_ratio, unless it was as bad before.
+            const double r1 = triangle_aspect_ratio(x, pos_[ia], pos_[ib]);
+            if (r1 > o_.max_aspect_ratio && r1 > triangle_aspect_ratio(pos_[iv], pos_[ia], pos_[ib])) return false;
           }
           if (cos_min_angle_ < 1) {
             // No corner below .min_angle, unless the face was as bad before.
@@ -776,6 +794,8 @@ class Collapser {
 
     if constexpr (!memoryless) data_[iq] = simplification::merge(policy_, data_[ip], data_[iq]);
     pos_[iq] = pl.position;
+    if constexpr (requires { policy_.collapsed(iq, data_[iq], pl.position); })
+      policy_.collapsed(iq, data_[iq], pl.position); // the survivor's attribute values
     faces_ -= static_cast<std::size_t>(top) + static_cast<std::size_t>(bottom);
     if constexpr (memoryless) ++epoch_;
     if (apexes > 0) merge_features(q, apex, merged, apexes);
@@ -926,9 +946,9 @@ class Collapser {
   Mutable_priority_queue<Priority> queue_;
   // Memoryless policies: the profile's scratch, and the collapse count at
   // which each edge was last requeued.
-  std::vector<std::array<std::uint32_t, 3>> tri_keys_;
   std::vector<std::array<std::uint32_t, 2>> border_keys_;
-  std::vector<std::uint32_t> link_keys_;
+  std::vector<std::uint32_t> link_seen_; // per vertex: the profile that listed it last
+  std::uint32_t link_epoch_ = 0;
   std::vector<Profile_triangle> tris_;
   std::vector<Profile_border_edge> borders_;
   std::vector<Eigen::Vector3d> link_;

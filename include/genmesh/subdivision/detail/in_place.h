@@ -26,7 +26,11 @@
 // of old vertices).
 // √3 and Doo-Sabin are not refined here: their levels do not keep the old
 // edges (√3 flips them, Doo-Sabin makes new faces from corner points), so
-// they go through snapshot → soup → rebuild (detail/refinement.h).
+// they go through snapshot → soup → rebuild (detail/refinement.h), as does
+// midpoint on polygons; the rebuild links a fresh mesh of the same type
+// through detail::link_soup, which is native on every backend
+// (genmesh_native_link_soup on Incidence_mesh, the backend's own
+// MutableFaceGraph functions elsewhere): no other mesh type is involved.
 // Canonical: faces are read from their lowest vertex, edges numbered by
 // first use and every sum taken in that order, so the result depends only on
 // the vertex numbering and the face cycles — not on halfedge(f), halfedge(v)
@@ -35,9 +39,11 @@
 // (Catmull-Clark) one per old face (face order); edges = old edges, their
 // other halves (first-use order), then the inner edges face by face; faces =
 // old faces, then the new ones face by face. A backend may append elements in
-// bulk with genmesh_native_append_elements(g, nv, ne, nf) (found by ADL, see
-// <genmesh/detail/halfedge/bulk.h>); otherwise add_vertex/add_edge/
-// add_face are called one by one.
+// bulk with genmesh_native_append_elements(g, nv, ne, nf) (found by ADL:
+// Halfedge_mesh in <genmesh/detail/halfedge/bulk.h>, one resize per array;
+// CGAL::Surface_mesh in <genmesh/adaptors/cgal.h>, one reserve and names by
+// arithmetic); otherwise (Polyhedron_3, OpenMesh) add_vertex/add_edge/
+// add_face are called one by one and their descriptors kept in tables.
 // Other backends (no set_next, as the incidence mesh) and meshes with removed
 // elements refine the same way through the local operations instead
 // (Local_refiner): every old edge k is split by genmesh::split_edge in
@@ -85,22 +91,31 @@ struct Generic_appended {
   face_descriptor_t<G> face(std::size_t k) const { return fs[k]; }
 };
 
-/// nv vertices, ne edges, nf faces more; the result names the k-th of each.
+/// The generic append: nv add_vertex, ne add_edge, nf add_face calls, the
+/// descriptors kept in tables.
+template <class G>
+Generic_appended<G> generic_append_elements(G& g, std::size_t nv, std::size_t ne, std::size_t nf) {
+  Generic_appended<G> a;
+  a.g = &g;
+  a.vs.reserve(nv);
+  a.hs.reserve(ne);
+  a.fs.reserve(nf);
+  for (std::size_t k = 0; k < nv; ++k) a.vs.push_back(add_vertex(g));
+  for (std::size_t k = 0; k < ne; ++k) a.hs.push_back(halfedge(add_edge(g), g));
+  for (std::size_t k = 0; k < nf; ++k) a.fs.push_back(add_face(g));
+  return a;
+}
+
+/// nv vertices, ne edges, nf faces more; the result names the k-th of each
+/// (vertex(k), halfedge(k, 0 or 1), face(k)). The backend's
+/// genmesh_native_append_elements (found by ADL) when it has one: it must
+/// give the elements generic_append_elements would, in the same order.
 template <class G>
 auto append_elements(G& g, std::size_t nv, std::size_t ne, std::size_t nf) {
-  if constexpr (Has_native_append<G>) {
+  if constexpr (Has_native_append<G>)
     return genmesh_native_append_elements(g, nv, ne, nf);
-  } else {
-    Generic_appended<G> a;
-    a.g = &g;
-    a.vs.reserve(nv);
-    a.hs.reserve(ne);
-    a.fs.reserve(nf);
-    for (std::size_t k = 0; k < nv; ++k) a.vs.push_back(add_vertex(g));
-    for (std::size_t k = 0; k < ne; ++k) a.hs.push_back(halfedge(add_edge(g), g));
-    for (std::size_t k = 0; k < nf; ++k) a.fs.push_back(add_face(g));
-    return a;
-  }
+  else
+    return generic_append_elements(g, nv, ne, nf);
 }
 
 /// No removed elements: iteration order is index order and new elements go to the end.

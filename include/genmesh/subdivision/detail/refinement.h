@@ -246,8 +246,7 @@ inline std::vector<std::uint32_t> pair_corners(const Polygon_soup& s) {
 /// refinement pattern; otherwise corners are paired through per-vertex
 /// buckets in linear time.
 template <class G>
-void build_refined(const Polygon_soup& s, G& g, std::vector<std::uint32_t> known_twin = {},
-                   std::vector<std::uint32_t>* corner_edge = nullptr) {
+void build_refined(const Polygon_soup& s, G& g, std::vector<std::uint32_t> known_twin = {}) {
   const std::size_t np = s.num_points(), nc = s.indices.size();
   const std::vector<std::uint32_t> head = corner_heads(s);
   std::vector<std::uint32_t> twin = std::move(known_twin), border_out(np, k_none);
@@ -261,15 +260,14 @@ void build_refined(const Polygon_soup& s, G& g, std::vector<std::uint32_t> known
       ++ne;
     }
   }
-  genmesh::detail::link_soup(s, twin, border_out, ne, g, corner_edge);
+  genmesh::detail::link_soup(s, twin, border_out, ne, g, nullptr);
 }
 
 /// The snapshot of the mesh build_refined(soup, g, twin) would make, taken
 /// from the soup directly (same numbering as snapshot(g) of that mesh), so
 /// that the levels of one call between the first and the last never build a
-/// mesh. soup_corner (if given) receives, per soup corner, its snapshot corner.
-inline Snapshot snapshot_of_soup(Polygon_soup&& soup, const std::vector<std::uint32_t>& twin,
-                                 std::vector<std::uint32_t>* soup_corner = nullptr) {
+/// mesh.
+inline Snapshot snapshot_of_soup(Polygon_soup&& soup, const std::vector<std::uint32_t>& twin) {
   Snapshot s;
   const std::size_t nv = soup.num_points(), nf = soup.num_faces(), nc = soup.indices.size();
   s.points = std::move(soup.points);
@@ -302,7 +300,6 @@ inline Snapshot snapshot_of_soup(Polygon_soup&& soup, const std::vector<std::uin
     if (s.corner_edge[rc] == k_none) s.add_edge(rc, s.corner_twin[rc]);
   }
   set_vertex_corners(s);
-  if (soup_corner) *soup_corner = std::move(remap);
   return s;
 }
 
@@ -310,9 +307,9 @@ inline Snapshot snapshot_of_soup(Polygon_soup&& soup, const std::vector<std::uin
 /// and records the counts.
 template <class G, class Pm = Default_map>
 void rebuild(G& g, const Polygon_soup& soup, Subdivision_result& r, std::vector<std::uint32_t> twin = {},
-             std::vector<std::uint32_t>* corner_edge = nullptr, const Pm& pm = {}) {
+             const Pm& pm = {}) {
   G fresh;
-  build_refined(soup, fresh, std::move(twin), corner_edge);
+  build_refined(soup, fresh, std::move(twin));
   g = std::move(fresh);
   if constexpr (!std::is_same_v<Pm, Default_map>) { // the caller's map gets the positions too
     Pm out = pm;
@@ -346,53 +343,6 @@ inline Crease_stars crease_stars(const Snapshot& s, const std::vector<double>& s
   return cs;
 }
 
-/// The vertex point of interior vertex v given its smooth-rule point: the
-/// crease rule (p + 6v + q)/8 with two crease edges, the corner rule (v stays)
-/// with three or more, each blended with the smooth point by the mean
-/// sharpness when that is below 1; the smooth point with fewer than two.
-inline Eigen::Vector3d crease_vertex_point(const Snapshot& s, const Crease_stars& cs, std::uint32_t v,
-                                           const Eigen::Vector3d& smooth) {
-  const std::uint32_t k = cs.count[v];
-  if (k < 2) return smooth;
-  const Eigen::Vector3d sharp = k == 2 ? Eigen::Vector3d((cs.ends[v] + 6.0 * s.points[v]) / 8.0) : s.points[v];
-  const double mean = cs.sharpness[v] / k;
-  return mean >= 1.0 ? sharp : Eigen::Vector3d((1.0 - mean) * smooth + mean * sharp);
-}
-
-/// The edge point of interior edge e given its smooth-rule point.
-inline Eigen::Vector3d crease_edge_point(const Snapshot& s, double sharpness, std::uint32_t e,
-                                         const Eigen::Vector3d& smooth) {
-  if (sharpness <= 0) return smooth;
-  const std::uint32_t c = s.edge_corner[e];
-  const Eigen::Vector3d mid = 0.5 * (s.points[s.corner_vertex[c]] + s.points[s.head(c)]);
-  return sharpness >= 1.0 ? mid : Eigen::Vector3d((1.0 - sharpness) * smooth + sharpness * mid);
-}
-
-/// The sharpness of the edges of the refined mesh: both halves of an old edge
-/// of sharpness s get max(0, s − 1) (∞ stays ∞), new edges 0. half(c, i) is
-/// the refined corner of half i of old corner c.
-template <class Half>
-std::vector<double> child_sharpness(const Snapshot& s, const std::vector<double>& sharp,
-                                    const std::vector<std::uint32_t>& new_corner_edge, std::size_t new_edges,
-                                    Half half) {
-  std::vector<double> out(new_edges, 0.0);
-  for (std::uint32_t e = 0; e < s.num_edges(); ++e) {
-    if (sharp[e] <= 0) continue;
-    const std::uint32_t c = s.edge_corner[e];
-    const double child = std::max(0.0, sharp[e] - 1.0);
-    out[new_corner_edge[half(c, 0)]] = child;
-    out[new_corner_edge[half(c, 1)]] = child;
-  }
-  return out;
-}
-
-/// Checks a crease vector against the mesh's edge count.
-inline void check_creases(const std::vector<double>& sharp, std::size_t edges, const char* scheme) {
-  if (!sharp.empty() && sharp.size() != edges)
-    throw invalid_input(std::string(scheme) + ": crease_sharpness has " + std::to_string(sharp.size()) +
-                        " entries for " + std::to_string(edges) + " edges");
-}
-
 /// A refined level: its faces (and new points), and each corner's twin
 /// (empty: found by pair_corners).
 struct Refined {
@@ -403,47 +353,32 @@ struct Refined {
 /// Runs `iterations` levels on g: snapshot g once (refusing faces of another
 /// size than face_size, if not 0, before anything changes), then
 /// level(snapshot, i) → Refined per level; the levels before the last go from
-/// soup to snapshot directly, the last one rebuilds g. With creases (sharp not
-/// empty) the sharpness follows the edges: half(s, c, i) is the refined soup
-/// corner of half i of old corner c.
-template <class G, class Level, class Half, class V, class Pm = Default_map>
-Subdivision_result run_levels(G& g, int iterations, const char* scheme, std::uint32_t face_size,
-                              std::vector<double>& sharp, Level level, Half half, V& vis, const Pm& pm = {}) {
+/// soup to snapshot directly, the last one rebuilds g (through
+/// genmesh::detail::link_soup: the backend's native genmesh_native_link_soup
+/// where it has one, its own MutableFaceGraph functions otherwise).
+template <class G, class Level, class V, class Pm = Default_map>
+Subdivision_result run_levels(G& g, int iterations, const char* scheme, std::uint32_t face_size, Level level, V& vis,
+                              const Pm& pm = {}) {
   if (iterations < 0) throw invalid_input(std::string(scheme) + ": iterations must be ≥ 0");
   // live counts by iteration: num_* may count removed elements (Surface_mesh)
-  std::size_t nv = 0, ne = 0, nf = 0;
+  std::size_t nv = 0, nf = 0;
   for (auto v : vertices(g)) (void)v, ++nv;
-  for (auto e : edges(g)) (void)e, ++ne;
   for (auto f : faces(g)) (void)f, ++nf;
-  check_creases(sharp, ne, scheme);
   Subdivision_result r{0, nv, nf};
   if (iterations > 0) {
     Snapshot s = snapshot(g, scheme, face_size, pm);
-    std::vector<std::uint32_t> corner_edge, remap;
     for (int i = 0; i < iterations; ++i) {
       vis.on_step("level", static_cast<std::size_t>(i), static_cast<std::size_t>(iterations));
       Refined out = level(s, i);
-      std::size_t new_edges = 0;
       if (i + 1 < iterations) {
         if (out.twin.empty()) out.twin = pair_corners(out.soup);
-        Snapshot next = snapshot_of_soup(std::move(out.soup), out.twin, sharp.empty() ? nullptr : &remap);
-        if (!sharp.empty()) {
-          corner_edge.resize(remap.size());
-          for (std::size_t c = 0; c < remap.size(); ++c) corner_edge[c] = next.corner_edge[remap[c]];
-        }
-        new_edges = next.num_edges();
+        Snapshot next = snapshot_of_soup(std::move(out.soup), out.twin);
         ++r.levels_done;
         r.vertices = next.num_vertices();
         r.faces = next.num_faces();
-        if (!sharp.empty())
-          sharp = child_sharpness(s, sharp, corner_edge, new_edges,
-                                  [&](std::uint32_t c, int h) { return half(s, c, h); });
         s = std::move(next);
       } else {
-        rebuild(g, out.soup, r, std::move(out.twin), sharp.empty() ? nullptr : &corner_edge, pm);
-        if (!sharp.empty())
-          sharp = child_sharpness(s, sharp, corner_edge, static_cast<std::size_t>(num_edges(g)),
-                                  [&](std::uint32_t c, int h) { return half(s, c, h); });
+        rebuild(g, out.soup, r, std::move(out.twin), pm);
       }
     }
     vis.on_step("level", static_cast<std::size_t>(iterations), static_cast<std::size_t>(iterations));
@@ -477,9 +412,6 @@ inline Eigen::Vector3d border_limit_point(const Snapshot& s, std::uint32_t v, Bo
   auto [a, b] = s.border_neighbours(v);
   return (s.points[a] + 4.0 * s.points[v] + s.points[b]) / 6.0;
 }
-
-/// For schemes without creases.
-inline std::uint32_t no_half(const Snapshot&, std::uint32_t, int) { return 0; }
 
 template <class G>
 concept Subdividable = genmesh::detail::Soup_buildable<G> && FaceListGraph<G> && VertexListGraph<G> && EdgeListGraph<G> &&
