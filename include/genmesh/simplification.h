@@ -138,6 +138,10 @@ struct Simplification_result {
   std::size_t vertices = 0, edges = 0, faces = 0; ///< live counts after
   double max_error = 0;                           ///< the largest error (sqrt of cost) of a collapse done
   Stop_reason stop_reason = Stop_reason::no_collapse_left;
+  /// The self-intersection guard's exact triangle tests (faces_intersect):
+  /// the candidate pairs its floating filters could not separate. A measure
+  /// of the guard's cost, for tuning and tests; 0 without the guard.
+  std::size_t exact_intersection_tests = 0;
 };
 
 } // namespace genmesh

@@ -188,6 +188,7 @@ class Collapser {
     r.vertices = count(vertices(g_));
     r.edges = count(edges(g_));
     r.faces = count(faces(g_));
+    r.exact_intersection_tests = exact_tests_;
   }
 
   // Checks the input, triangulates if asked, reads the points.
@@ -540,6 +541,15 @@ class Collapser {
 
   // ---- the self-intersection guard ----------------------------------------
 
+  // Per new face: its normal (b − a) × (c − a) and the error scale of
+  // off_plane's filter; the projection of in_projection_separated.
+  struct Fresh_plane {
+    Eigen::Vector3d n;
+    double scale;
+    int axis, sign; // sign: of the projected orientation, 0 if uncertain (no filter)
+    std::array<std::array<double, 2>, 3> q; // the corners projected
+  };
+
   // The corners of live face f: vertex indices and points.
   Mesh_triangle<std::uint32_t> triangle(std::size_t f) const {
     const H h0 = halfedge(fdesc_[f], g_);
@@ -679,9 +689,11 @@ class Collapser {
       } while (y != start);
     }
     if (fresh_.empty()) return true;
+    fresh_plane_.resize(fresh_.size());
+    for (std::size_t i = 0; i < fresh_.size(); ++i) fresh_plane_[i] = plane_of(fresh_[i]);
     for (std::size_t i = 0; i < fresh_.size(); ++i)
       for (std::size_t j = i + 1; j < fresh_.size(); ++j)
-        if (faces_intersect(fresh_[i], fresh_[j])) return false;
+        if (!separated(i, fresh_[j]) && exact_test(fresh_[i], fresh_[j])) return false;
     // Against the live faces near the new ones (one query for the union of
     // their boxes; a candidate is tested exactly against each new face whose
     // box its box meets). slot_.seen also marks the candidates seen (a stamp
@@ -692,14 +704,6 @@ class Collapser {
       fresh_box_[i] = Box::of(fresh_[i].p[0], fresh_[i].p[1], fresh_[i].p[2]);
       all.lo = all.lo.cwiseMin(fresh_box_[i].lo);
       all.hi = all.hi.cwiseMax(fresh_box_[i].hi);
-    }
-    fresh_plane_.resize(fresh_.size());
-    for (std::size_t i = 0; i < fresh_.size(); ++i) {
-      const auto& t = fresh_[i];
-      const Eigen::Vector3d e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0];
-      const double scale = 1e-13 * e1.cwiseAbs().maxCoeff() * e2.cwiseAbs().maxCoeff();
-      // Where the bound itself could underflow, no filtering.
-      fresh_plane_[i] = {triangle_normal(t.p[0], t.p[1], t.p[2]), scale > 1e-250 ? scale : std::numeric_limits<double>::infinity()};
     }
     const std::uint32_t query = ++stamp_ring_;
     bool hit = false;
@@ -738,9 +742,137 @@ class Collapser {
           u = slot_triangle(f);
           built = true;
         }
-        if (!off_plane(i, u) && faces_intersect(fresh_[i], u)) hit = true;
+        if (!separated(i, u) && exact_test(fresh_[i], u)) hit = true;
       }
     }
+  }
+
+  // faces_intersect, counted.
+  bool exact_test(const Mesh_triangle<std::uint32_t>& t, const Mesh_triangle<std::uint32_t>& u) {
+    ++exact_tests_;
+    return faces_intersect(t, u);
+  }
+
+  // New face t's plane and its projection for the filters below.
+  Fresh_plane plane_of(const Mesh_triangle<std::uint32_t>& t) const {
+    Fresh_plane pl;
+    const Eigen::Vector3d e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0];
+    const double scale = 1e-13 * e1.cwiseAbs().maxCoeff() * e2.cwiseAbs().maxCoeff();
+    pl.n = triangle_normal(t.p[0], t.p[1], t.p[2]);
+    // Where the bound itself could underflow, no filtering.
+    pl.scale = scale > 1e-250 ? scale : std::numeric_limits<double>::infinity();
+    // The axis t projects along: its normal's largest component, if the
+    // projected triangle's orientation is certain (it is that component,
+    // computed as orient2d computes it, so Shewchuk's bound applies).
+    const Eigen::Vector3d a = pl.n.cwiseAbs();
+    pl.axis = a.x() >= a.y() && a.x() >= a.z() ? 0 : a.y() >= a.z() ? 1 : 2;
+    pl.sign = orientation(t, pl.axis);
+    for (int c = 0; c < 3; ++c) pl.q[c] = project2(t.p[c], pl.axis);
+    return pl;
+  }
+
+  // A point projected along axis (the axes of detail::tri::project: the
+  // result's orientation is the sign of the normal's component).
+  static std::array<double, 2> project2(const Eigen::Vector3d& p, int axis) {
+    switch (axis) {
+      case 0: return {p.y(), p.z()};
+      case 1: return {p.z(), p.x()};
+      default: return {p.x(), p.y()};
+    }
+  }
+
+  // The sign of orient2d(a, b, c) when the floating value decides it (twice
+  // Shewchuk's bound for orient2d's first stage), or when every difference
+  // and product in it was exact (then comparing the products is exact: the
+  // collinear corners of a grid); `unsure` otherwise.
+  static constexpr int unsure = 2;
+  static int sure_orient2d(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                           const std::array<double, 2>& c) {
+    const double bx = b[0] - a[0], cy = c[1] - a[1], by = b[1] - a[1], cx = c[0] - a[0];
+    const double l = bx * cy, r = by * cx;
+    const double det = l - r, bound = 2 * detail::pred::o2d_bound * (std::abs(l) + std::abs(r));
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+    auto exact_difference = [](double x, double y, double d) {
+      double s, e;
+      detail::pred::two_sum(x, -y, s, e);
+      return s == d && e == 0;
+    };
+    if (!exact_difference(b[0], a[0], bx) || !exact_difference(c[1], a[1], cy) ||
+        !exact_difference(b[1], a[1], by) || !exact_difference(c[0], a[0], cx) || std::fma(bx, cy, -l) != 0 ||
+        std::fma(by, cx, -r) != 0)
+      return unsure;
+    return l > r ? 1 : l < r ? -1 : 0;
+  }
+
+  static int orientation(const Mesh_triangle<std::uint32_t>& t, int axis) {
+    const int s = sure_orient2d(project2(t.p[0], axis), project2(t.p[1], axis), project2(t.p[2], axis));
+    return s == unsure ? 0 : s;
+  }
+
+  // Can new face i and face u be shown to meet at most in what they share
+  // by the floating filters: off_plane, or a separating line in new face i's
+  // projection (see in_projection_separated)?
+  bool separated(std::size_t i, const Mesh_triangle<std::uint32_t>& u) const {
+    return off_plane(i, u) || in_projection_separated(i, u);
+  }
+
+  // Projected along new face t's axis (one-to-one on t's plane), is there an
+  // edge line ab of t or of u with its own triangle on one side and the
+  // other triangle on the other, touching the line only in shared corners
+  // or beyond the segment ab (see splits)? Then t ∩ u projects into the
+  // projection of what they share, and t, projected one-to-one, meets u only
+  // there (a shared vertex or edge): what faces_intersect calls no
+  // intersection. Exactly coplanar input (a flat region, where off_plane
+  // can never decide) is the case it is for: each line costs three
+  // floating orientations instead of the exact 2D tests of all three
+  // projections.
+  bool in_projection_separated(std::size_t i, const Mesh_triangle<std::uint32_t>& u) const {
+    const Fresh_plane& pl = fresh_plane_[i];
+    if (pl.sign == 0) return false;
+    const auto& t = fresh_[i];
+    std::array<std::array<double, 2>, 3> uq;
+    for (int c = 0; c < 3; ++c) uq[c] = project2(u.p[c], pl.axis);
+    for (int j = 0; j < 3; ++j) {
+      const int k = (j + 1) % 3, l = (j + 2) % 3;
+      if (splits(uq, u.id, pl.q[j], pl.q[k], t.id[j], t.id[k], t.id[l], -pl.sign)) return true;
+    }
+    const int su = sure_orient2d(uq[0], uq[1], uq[2]);
+    if (su == 0 || su == unsure) return false;
+    for (int j = 0; j < 3; ++j) {
+      const int k = (j + 1) % 3, l = (j + 2) % 3;
+      if (splits(pl.q, t.id, uq[j], uq[k], u.id[j], u.id[k], u.id[l], -su)) return true;
+    }
+    return false;
+  }
+
+  // Does the line a → b (the edge ia → ib of a triangle whose third corner
+  // `apex` lies on side −side) keep the triangle q on side `side`, but for
+  // corners on the line that are shared (ia, ib) or lie beyond the segment
+  // ab — all on one end, and beyond that end only if it is not shared —, so
+  // that the two triangles' common points on the line are shared corners?
+  static bool splits(const std::array<std::array<double, 2>, 3>& q, const std::array<std::uint32_t, 3>& qid,
+                     const std::array<double, 2>& a, const std::array<double, 2>& b, std::uint32_t ia,
+                     std::uint32_t ib, std::uint32_t apex, int side) {
+    // Positions along the line by the coordinate in which a and b differ
+    // (exact comparisons of exactly collinear points).
+    const int k = a[0] != b[0] ? 0 : 1;
+    const bool up = b[k] > a[k];
+    bool has_a = false, has_b = false;
+    int end = 0; // the end (−1: a's, +1: b's) the collinear corners lie beyond
+    for (int c = 0; c < 3; ++c) {
+      if (qid[c] == ia) { has_a = true; continue; }
+      if (qid[c] == ib) { has_b = true; continue; }
+      if (qid[c] == apex) return false;
+      const int o = sure_orient2d(a, b, q[c]);
+      if (o == side) continue;
+      if (o != 0) return false;
+      const double x = q[c][k];
+      const int e = (up ? x < a[k] : x > a[k]) ? -1 : (up ? x > b[k] : x < b[k]) ? 1 : 0;
+      if (e == 0 || (end != 0 && e != end)) return false;
+      end = e;
+    }
+    return end == 0 || (end < 0 ? !has_b : !has_a);
   }
 
   // Are the corners of u that new face i does not share all strictly on one
@@ -981,13 +1113,8 @@ class Collapser {
   std::uint32_t stamp_ring_ = 0;
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
   std::vector<Box> fresh_box_;
-  // Per new face: its normal (b − a) × (c − a) and the error scale of
-  // off_plane's filter.
-  struct Fresh_plane {
-    Eigen::Vector3d n;
-    double scale;
-  };
   std::vector<Fresh_plane> fresh_plane_;
+  std::size_t exact_tests_ = 0; // faces_intersect calls (the filters decided the rest)
   Face_grid grid_;
   std::size_t grid_faces_ = 0;
   std::vector<std::uint8_t> feature_, on_line_;
