@@ -320,14 +320,19 @@ class Collapser {
     on_line_.assign(vb, 0);
     init_features(eb);
     if (o_.prevent_self_intersections) {
+      // Slots by face index first (build_grid lays them out in Morton order).
       const std::size_t fb = index_bound(face_index, g_);
-      fdesc_.assign(fb, F{});
       slot_.assign(fb, Face_slot{});
+      slot_face_.resize(fb);
       slot_of_.assign(fb, no_slot);
+      for (std::size_t f = 0; f < fb; ++f) slot_face_[f] = static_cast<std::uint32_t>(f);
       for (const F f : faces(g_)) {
-        fdesc_[fi(f)] = f;
+        const H h0 = halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
+        const std::array<std::uint32_t, 3> id{static_cast<std::uint32_t>(vi(target(h0, g_))),
+                                              static_cast<std::uint32_t>(vi(target(h1, g_))),
+                                              static_cast<std::uint32_t>(vi(target(h2, g_)))};
         slot_of_[fi(f)] = static_cast<std::uint32_t>(fi(f));
-        slot_[fi(f)].v[0] = 0;
+        slot_[fi(f)].set(Box::of(pos_[id[0]], pos_[id[1]], pos_[id[2]]), id);
       }
       build_grid();
     }
@@ -550,18 +555,6 @@ class Collapser {
     std::array<std::array<double, 2>, 3> q; // the corners projected
   };
 
-  // The corners of live face f: vertex indices and points.
-  Mesh_triangle<std::uint32_t> triangle(std::size_t f) const {
-    const H h0 = halfedge(fdesc_[f], g_);
-    Mesh_triangle<std::uint32_t> t;
-    H h = h0;
-    for (int i = 0; i < 3; ++i, h = next(h, g_)) {
-      t.id[i] = static_cast<std::uint32_t>(vi(target(h, g_)));
-      t.p[i] = pos_[t.id[i]];
-    }
-    return t;
-  }
-
   // The corners of live face f as its slot has them (set by build_grid and
   // update_grid, which see every face whose corners a collapse changes).
   Mesh_triangle<std::uint32_t> slot_triangle(std::size_t f) const {
@@ -591,36 +584,47 @@ class Collapser {
   // The live faces' slots are laid out in Morton order of their boxes'
   // centres (cells of the grid), so that the faces of a cell sit together
   // in memory: a query reads a few runs of slots instead of scattered ones.
+  // Read from the slots alone (their corners are current), not the mesh.
   void build_grid() {
-    const double m = mean_edge_length();
+    double sum = 0;
+    std::size_t n = 0;
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    for (std::size_t s = 0; s < slot_.size(); ++s) {
+      if (!slot_[s].alive()) {
+        slot_of_[slot_face_[s]] = no_slot;
+        continue;
+      }
+      const auto t = slot_triangle(s);
+      sum += (t.p[1] - t.p[0]).norm() + (t.p[2] - t.p[1]).norm() + (t.p[0] - t.p[2]).norm();
+      n += 3;
+      lo = lo.cwiseMin(t.p[0]).cwiseMin(t.p[1]).cwiseMin(t.p[2]);
+    }
+    const double m = n > 0 ? sum / static_cast<double>(n) : 0.0;
     const double cell = m > 0 ? 4.0 * m : 1.0;
     grid_.reset(cell, faces_);
     order_.clear();
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-    for (std::size_t f = 0; f < slot_of_.size(); ++f)
-      if (slot_of_[f] != no_slot && slot_[slot_of_[f]].alive()) {
-        const auto t = triangle(f);
-        lo = lo.cwiseMin(t.p[0]).cwiseMin(t.p[1]).cwiseMin(t.p[2]);
-      }
-    for (std::size_t f = 0; f < slot_of_.size(); ++f) {
-      if (slot_of_[f] == no_slot || !slot_[slot_of_[f]].alive()) {
-        slot_of_[f] = no_slot;
-        continue;
-      }
-      const auto t = triangle(f);
+    for (std::size_t s = 0; s < slot_.size(); ++s) {
+      if (!slot_[s].alive()) continue;
+      const auto t = slot_triangle(s);
       const Eigen::Vector3d c = ((t.p[0] + t.p[1] + t.p[2]) / 3.0 - lo) / cell;
-      order_.push_back({morton(c), static_cast<std::uint32_t>(f)});
+      order_.push_back({morton(c), static_cast<std::uint32_t>(s)});
     }
     std::sort(order_.begin(), order_.end());
-    slot_.assign(order_.size(), Face_slot{});
+    std::vector<Face_slot> slots(order_.size());
+    std::vector<std::uint32_t> faces(order_.size());
     for (std::size_t s = 0; s < order_.size(); ++s) {
-      const std::uint32_t f = order_[s].second;
-      slot_of_[f] = static_cast<std::uint32_t>(s);
-      const auto t = triangle(f);
-      const Box b = Box::of(t.p[0], t.p[1], t.p[2]);
-      slot_[s].set(b, t.id);
-      grid_.insert(static_cast<std::uint32_t>(s), b);
+      const std::uint32_t old = order_[s].second;
+      slots[s] = slot_[old];
+      faces[s] = slot_face_[old];
+      slot_of_[faces[s]] = static_cast<std::uint32_t>(s);
     }
+    slot_ = std::move(slots);
+    slot_face_ = std::move(faces);
+    for (std::size_t s = 0; s < slot_.size(); ++s) {
+      const auto t = slot_triangle(s);
+      grid_.insert(static_cast<std::uint32_t>(s), Box::of(t.p[0], t.p[1], t.p[2]));
+    }
+    std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(order_);
     grid_faces_ = faces_;
   }
 
@@ -644,10 +648,14 @@ class Collapser {
     H x = start;
     do {
       if (!border(x)) {
-        const std::size_t f = fi(face(x, g_)), sf = slot_of_[f];
-        const auto t = triangle(f);
-        const Box b = Box::of(t.p[0], t.p[1], t.p[2]);
-        slot_[sf].set(b, t.id);
+        // x: s → q, next(x): q → w; the face is (s, q, w) (its corners from
+        // the walk, not from halfedge(f): one miss less a face).
+        const std::size_t sf = slot_of_[fi(face(x, g_))];
+        const std::uint32_t is = static_cast<std::uint32_t>(vi(source(x, g_))),
+                            iq = static_cast<std::uint32_t>(vi(q)),
+                            iw = static_cast<std::uint32_t>(vi(target(next(x, g_), g_)));
+        const Box b = Box::of(pos_[is], pos_[iq], pos_[iw]);
+        slot_[sf].set(b, {is, iq, iw});
         grid_.insert(static_cast<std::uint32_t>(sf), b);
       }
       x = opposite(next(x, g_), g_);
@@ -659,31 +667,23 @@ class Collapser {
   bool stays_embedded(H h, const Eigen::Vector3d& x) {
     const std::uint32_t ip = static_cast<std::uint32_t>(vi(source(h, g_))),
                         iq = static_cast<std::uint32_t>(vi(target(h, g_)));
-    // The faces around p and q (they change or vanish), stamped; the new ones.
+    // The faces around p and q but the two of the edge: the new ones, their
+    // corners from the walk (no slot read: p's and q's neighbourhoods are in
+    // cache from the fold-over test).
     if (stamp_ring_ > 0xF0000000u) { // before the stamps wrap
       for (auto& x : slot_) x.seen = 0;
       stamp_ring_ = 0;
     }
-    const std::uint32_t ring = ++stamp_ring_;
     fresh_.clear();
     for (const V v : {source(h, g_), target(h, g_)}) {
       const H start = halfedge(v, g_);
       H y = start;
       do {
         if (!border(y)) {
-          const std::size_t f = slot_of_[fi(face(y, g_))];
-          if (slot_[f].seen != ring) {
-            slot_[f].seen = ring;
-            auto t = slot_triangle(f); // corners kept current in the slot
-            int ends = 0;
-            for (int i = 0; i < 3; ++i)
-              if (t.id[i] == ip || t.id[i] == iq) {
-                ++ends;
-                t.id[i] = iq;
-                t.p[i] = x;
-              }
-            if (ends == 1) fresh_.push_back(t);
-          }
+          // y: s → v, next(y): v → w; the face is (s, v, w).
+          const std::uint32_t is = static_cast<std::uint32_t>(vi(source(y, g_))),
+                              iw = static_cast<std::uint32_t>(vi(target(next(y, g_), g_)));
+          if (is != ip && is != iq && iw != ip && iw != iq) fresh_.push_back({{pos_[is], x, pos_[iw]}, {is, iq, iw}});
         }
         y = opposite(next(y, g_), g_);
       } while (y != start);
@@ -696,8 +696,8 @@ class Collapser {
         if (!separated(i, fresh_[j]) && exact_test(fresh_[i], fresh_[j])) return false;
     // Against the live faces near the new ones (one query for the union of
     // their boxes; a candidate is tested exactly against each new face whose
-    // box its box meets). slot_.seen also marks the candidates seen (a stamp
-    // above the ring's: ring faces are skipped before they are stamped).
+    // box its box meets; faces around p or q are skipped: their corners say
+    // so). slot_.seen marks the candidates seen.
     fresh_box_.resize(fresh_.size());
     Box all = Box::of(fresh_[0].p[0], fresh_[0].p[1], fresh_[0].p[2]);
     for (std::size_t i = 0; i < fresh_.size(); ++i) {
@@ -707,15 +707,17 @@ class Collapser {
     }
     const std::uint32_t query = ++stamp_ring_;
     bool hit = false;
-    grid_.query(all, [&](std::span<const std::uint32_t> cell) {
-      // Nearly every slot read is a cache miss: ask for it a few faces ahead.
-      constexpr std::size_t ahead = 8;
-      for (std::size_t k = 0; k < std::min(ahead, cell.size()); ++k) prefetch(&slot_[cell[k]]);
-      for (std::size_t k = 0; k < cell.size() && !hit; ++k) {
-        if (k + ahead < cell.size()) prefetch(&slot_[cell[k + ahead]]);
-        test_candidate(cell[k], ring, query, all, hit);
-      }
+    // The entries whose quantized box meets the union's; their slots are
+    // read at random: ask for all of them before testing the first.
+    cand_.clear();
+    grid_.query(all, [&](std::uint32_t f) {
+      prefetch(&slot_[f]);
+      cand_.push_back(f);
     });
+    for (const std::uint32_t f : cand_)
+      if (slot_[f].alive())
+        for (const std::uint32_t v : slot_[f].v) prefetch(&pos_[v]);
+    for (std::size_t k = 0; k < cand_.size() && !hit; ++k) test_candidate(cand_[k], ip, iq, query, all, hit);
     if (hit) return false;
     return true;
   }
@@ -727,12 +729,15 @@ class Collapser {
   }
 
   // The exact test of candidate face f against the new faces (a no-op for a
-  // dead or ring face, or one seen in this query already).
-  void test_candidate(std::uint32_t f, std::uint32_t ring, std::uint32_t query, const Box& all, bool& hit) {
+  // dead face, one around p or q, or one seen in this query already).
+  void test_candidate(std::uint32_t f, std::uint32_t ip, std::uint32_t iq, std::uint32_t query, const Box& all,
+                      bool& hit) {
     {
       Face_slot& sl = slot_[f];
-      if (!sl.alive() || sl.seen == ring || sl.seen == query) return;
+      if (!sl.alive() || sl.seen == query) return;
       sl.seen = query;
+      for (const std::uint32_t v : sl.v)
+        if (v == ip || v == iq) return;
       if (!sl.overlaps(all)) return;
       bool built = false;
       Mesh_triangle<std::uint32_t> u;
@@ -1079,7 +1084,6 @@ class Collapser {
   // Feature lines: per edge, is it one; per vertex, does it move along one.
   bool features_ = false;
   // The self-intersection guard: faces by index, alive or not, stamps, grid.
-  std::vector<F> fdesc_;
   // Per face: its box (float, rounded outwards: half the memory traffic of
   // the query loop), the stamp of the last test that saw it, its corners
   // (read by a candidate's exact test without walking the mesh; v[0] ==
@@ -1109,9 +1113,11 @@ class Collapser {
   std::vector<Face_slot> slot_; // in Morton order (see build_grid)
   static constexpr std::uint32_t no_slot = ~std::uint32_t{0};
   std::vector<std::uint32_t> slot_of_; // by face index; no_slot once dead
+  std::vector<std::uint32_t> slot_face_; // by slot: its face index
   std::vector<std::pair<std::uint64_t, std::uint32_t>> order_;
   std::uint32_t stamp_ring_ = 0;
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
+  std::vector<std::uint32_t> cand_; // a query's candidate slots
   std::vector<Box> fresh_box_;
   std::vector<Fresh_plane> fresh_plane_;
   std::size_t exact_tests_ = 0; // faces_intersect calls (the filters decided the rest)
