@@ -640,10 +640,8 @@ class Collapser {
   // boxes; when the faces have halved since the last build, rebuild with
   // cells fitting the grown faces.
   void update_grid(V q) {
-    if (2 * faces_ < grid_faces_) {
-      build_grid();
-      return;
-    }
+    // The slots first: a rebuild reads them.
+    const bool rebuild = 2 * faces_ < grid_faces_;
     const H start = halfedge(q, g_);
     H x = start;
     do {
@@ -656,10 +654,11 @@ class Collapser {
                             iw = static_cast<std::uint32_t>(vi(target(next(x, g_), g_)));
         const Box b = Box::of(pos_[is], pos_[iq], pos_[iw]);
         slot_[sf].set(b, {is, iq, iw});
-        grid_.insert(static_cast<std::uint32_t>(sf), b);
+        if (!rebuild) grid_.insert(static_cast<std::uint32_t>(sf), b);
       }
       x = opposite(next(x, g_), g_);
     } while (x != start);
+    if (rebuild) build_grid();
   }
 
   // Would the faces the collapse of edge(h) into target(h) at x makes meet
@@ -1003,7 +1002,17 @@ class Collapser {
     // neighbours may pass their fold-over test now.
     const H start = halfedge(q, g_);
     H x = start;
+    // The queue entries and neighbours' data the requeue reads are scattered:
+    // ask for all of them first, so that their misses overlap.
+    around_.clear();
     do {
+      around_.push_back(x);
+      queue_.prefetch(ei(edge(x, g_)));
+      prefetch(&data_[vi(source(x, g_))]);
+      x = opposite(next(x, g_), g_);
+    } while (x != start);
+    for (const H y : around_) queue_.prefetch_entry(ei(edge(y, g_)));
+    for (const H x : around_) {
       requeue(edge(x, g_));
       const V n = source(x, g_);
       if (hint_[vi(n)]) {
@@ -1016,8 +1025,7 @@ class Collapser {
           y = opposite(next(y, g_), g_);
         } while (y != s2);
       }
-      x = opposite(next(x, g_), g_);
-    } while (x != start);
+    }
     hint_[iq] = 0;
     return true;
   }
@@ -1118,6 +1126,7 @@ class Collapser {
   std::uint32_t stamp_ring_ = 0;
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
   std::vector<std::uint32_t> cand_; // a query's candidate slots
+  std::vector<H> around_;           // the survivor's incoming halfedges
   std::vector<Box> fresh_box_;
   std::vector<Fresh_plane> fresh_plane_;
   std::size_t exact_tests_ = 0; // faces_intersect calls (the filters decided the rest)
