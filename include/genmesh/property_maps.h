@@ -12,6 +12,13 @@
 // index_bound(tag, g) is the size a scratch array indexed by that index map
 // needs (it counts removed, not yet collected elements too); it is *not* the
 // live count num_vertices(g) (see concepts/genmesh/concepts/descriptor.h).
+//
+// Every backend's index maps keep a live element's index unchanged across
+// edits, so algorithms may keep index-keyed tables while they edit (simplify,
+// isotropic_remeshing): removed elements leave holes (or have their index
+// recycled by a later new element), and new elements take an index no live
+// element holds. (CGAL::Polyhedron_3 too: its adaptor keeps valid item ids and
+// numbers only new items, see <genmesh/adaptors/cgal.h>.)
 #pragma once
 
 #include <genmesh/point_traits.h>
@@ -50,22 +57,12 @@ concept HasVertexPoints = requires(G& g) {
   get(vertex_point, g);
 } && Point3<point_t<G>>;
 
-/// A graph with dense integer indices for Tag's elements, and their bound.
+/// A graph with integer indices for Tag's elements (unique, below the bound, not
+/// necessarily dense), and their bound.
 template <class G, class Tag>
 concept HasIndexMap = requires(const G& g) {
   get(Tag{}, g);
   { index_bound(Tag{}, g) } -> std::convertible_to<std::size_t>;
 };
-
-/// Whether G's index maps keep every live element's index across edits
-/// (genmesh's meshes, Surface_mesh and OpenMesh: removed elements leave
-/// holes, new ones get fresh indices). An adaptor whose indices are
-/// renumbered after an edit specializes this to false: Polyhedron_3, whose
-/// ids are made a dense numbering again after every removal
-/// (<genmesh/adaptors/cgal.h>). Algorithms that keep index-keyed tables
-/// across edits (simplify, isotropic_remeshing and its steps) refuse such a
-/// mesh at compile time instead of reading stale tables.
-template <class G>
-inline constexpr bool indices_survive_edits = true;
 
 } // namespace genmesh

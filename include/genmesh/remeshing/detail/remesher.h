@@ -86,10 +86,6 @@ inline constexpr std::uint8_t e_fixed = 2;       // never split, collapsed or fl
 
 template <Remeshable G, class Visitor = Mutation_visitor>
 class Remesher {
-  static_assert(indices_survive_edits<G>,
-                "genmesh: isotropic remeshing keeps index-keyed tables across edits, and this mesh renumbers its "
-                "indices after an edit (Polyhedron_3: use CGAL::Surface_mesh, genmesh::Halfedge_mesh "
-                "or OpenMesh; see indices_survive_edits in <genmesh/property_maps.h>)");
 public:
   using V = vertex_descriptor_t<G>;
   using H = halfedge_descriptor_t<G>;
