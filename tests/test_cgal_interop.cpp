@@ -506,9 +506,9 @@ template <class Poly>
 // The index maps keep the contract through every kind of edit, and a live
 // element's id never changes: elements appended with fresh ids (split_edge,
 // add_center_vertex), copied with an old element's id (split_vertex copies
-// the vertex), removed from the middle (join_vertex, remove_center_vertex),
-// the last elements removed (collapse_edge of the newest edge), and edit
-// pairs that restore every size.
+// the vertex), removed from the middle (join_vertex), the last ones
+// removed (remove_center_vertex after add_center_vertex, join_vertex of a
+// new edge), and edit pairs that restore every size.
 TEST(CgalToGenmesh, PolyhedronIdsFollowEveryEdit) {
   Polyhedron_with_ids poly;
   build_with_cgal(genmesh::make_icosphere(1), poly);
@@ -534,12 +534,12 @@ TEST(CgalToGenmesh, PolyhedronIdsFollowEveryEdit) {
   }
   EXPECT_EQ(num_vertices(poly), nv + 6);
   EXPECT_EQ(num_faces(poly), nf);
-  // Remove the newest elements (the lists' last ones): a split edge's new
-  // halves collapsed again.
+  // Remove the newest halfedges (the list's last ones): split an edge and
+  // join its new half away again (join_vertex removes the old end vertex).
   for (int round = 0; round < 3; ++round) {
     const auto h = edit([&] { return CGAL::Euler::split_edge(nth_edge(poly, 11 * round).halfedge(), poly); },
                         "split_edge", round);
-    edit([&] { return CGAL::Euler::collapse_edge(edge(h, poly), poly); }, "collapse_edge", round);
+    edit([&] { return CGAL::Euler::join_vertex(h, poly); }, "join_vertex", round);
   }
   EXPECT_EQ(num_vertices(poly), nv + 6);
   // A copy (same ids) and a fresh polyhedron: each numbered on its own.
