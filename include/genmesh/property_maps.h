@@ -65,4 +65,36 @@ concept HasIndexMap = requires(const G& g) {
   { index_bound(Tag{}, g) } -> std::convertible_to<std::size_t>;
 };
 
+/// While alive, new elements of g get fresh indices (appended) instead of
+/// reusing the indices of removed ones, on every mesh that recycles
+/// (Halfedge_mesh, Incidence_mesh, Surface_mesh: set_recycle_garbage);
+/// restores the mesh's setting when it dies. Meshes that never recycle
+/// (OpenMesh, Polyhedron_3's adaptor) need nothing. An algorithm that both
+/// removes and adds elements and orders its work by index (remeshing) holds
+/// one, so that the numbering of what it creates, and therefore its result,
+/// is the same on every backend.
+template <class G>
+class Append_only_indices {
+public:
+  explicit Append_only_indices(G& g) : g_(g) {
+    if constexpr (recycles) {
+      was_ = g_.does_recycle_garbage();
+      g_.set_recycle_garbage(false);
+    }
+  }
+  ~Append_only_indices() {
+    if constexpr (recycles) g_.set_recycle_garbage(was_);
+  }
+  Append_only_indices(const Append_only_indices&) = delete;
+  Append_only_indices& operator=(const Append_only_indices&) = delete;
+
+private:
+  static constexpr bool recycles = requires(G& g) {
+    { g.does_recycle_garbage() } -> std::convertible_to<bool>;
+    g.set_recycle_garbage(false);
+  };
+  G& g_;
+  bool was_ = false;
+};
+
 } // namespace genmesh

@@ -95,7 +95,7 @@ public:
 
   /// The visitor's per-operation hooks see every split, collapse and flip.
   Remesher(G& g, const Remeshing_options& o, const char* who, Visitor& visitor)
-      : g_(g), o_(o), who_(who), vis_(&visitor), pm_(get(vertex_point, g)), vi_(get(vertex_index, g)),
+      : g_(g), append_only_(g), o_(o), who_(who), vis_(&visitor), pm_(get(vertex_point, g)), vi_(get(vertex_index, g)),
         ei_(get(edge_index, g)), fi_(get(face_index, g)) {
     check_options();
     prepare_faces();
@@ -106,7 +106,7 @@ public:
   }
 
   Remesher(G& g, const Remeshing_options& o, const char* who)
-      : g_(g), o_(o), who_(who), own_vis_(std::in_place), vis_(&*own_vis_), pm_(get(vertex_point, g)),
+      : g_(g), append_only_(g), o_(o), who_(who), own_vis_(std::in_place), vis_(&*own_vis_), pm_(get(vertex_point, g)),
         vi_(get(vertex_index, g)), ei_(get(edge_index, g)), fi_(get(face_index, g)) {
     check_options();
     prepare_faces();
@@ -946,6 +946,10 @@ private:
   }
 
   G& g_;
+  // New elements get fresh indices while the remesher lives: its work is
+  // ordered by index, and recycled indices (LIFO free lists) are not what
+  // OpenMesh or Polyhedron_3 give, so the result would differ there.
+  Append_only_indices<G> append_only_;
   const Remeshing_options& o_;
   const char* who_;
   std::optional<std::remove_cvref_t<Visitor>> own_vis_;
