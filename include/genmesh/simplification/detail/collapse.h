@@ -328,7 +328,7 @@ class Collapser {
                                               static_cast<std::uint32_t>(vi(target(h1, g_))),
                                               static_cast<std::uint32_t>(vi(target(h2, g_)))};
         slot_of_[fi(f)] = static_cast<std::uint32_t>(fi(f));
-        slot_[fi(f)].set(id);
+        slot_[fi(f)].set(Box::of(pos_[id[0]], pos_[id[1]], pos_[id[2]]), id);
       }
       build_grid();
     }
@@ -649,7 +649,7 @@ class Collapser {
                             iq = static_cast<std::uint32_t>(vi(q)),
                             iw = static_cast<std::uint32_t>(vi(target(next(x, g_), g_)));
         const Box b = Box::of(pos_[is], pos_[iq], pos_[iw]);
-        slot_[sf].set({is, iq, iw});
+        slot_[sf].set(b, {is, iq, iw});
         if (!rebuild) grid_.insert(static_cast<std::uint32_t>(sf), b);
       }
       x = opposite(next(x, g_), g_);
@@ -702,17 +702,15 @@ class Collapser {
     }
     const std::uint32_t query = ++stamp_ring_;
     bool hit = false;
-    // The entries whose quantized box meets the union's; their slots are
-    // read at random: ask for all of them before testing the first.
-    cand_.clear();
-    grid_.query(all, [&](std::uint32_t f) {
-      prefetch(&slot_[f]);
-      cand_.push_back(f);
+    grid_.query(all, [&](std::span<const std::uint32_t> cell) {
+      // Nearly every slot read is a cache miss: ask for it a few faces ahead.
+      constexpr std::size_t ahead = 8;
+      for (std::size_t k = 0; k < std::min(ahead, cell.size()); ++k) prefetch(&slot_[cell[k]]);
+      for (std::size_t k = 0; k < cell.size() && !hit; ++k) {
+        if (k + ahead < cell.size()) prefetch(&slot_[cell[k + ahead]]);
+        test_candidate(cell[k], ip, iq, query, all, hit);
+      }
     });
-    for (const std::uint32_t f : cand_)
-      if (slot_[f].alive())
-        for (const std::uint32_t v : slot_[f].v) prefetch(&pos_[v]);
-    for (std::size_t k = 0; k < cand_.size() && !hit; ++k) test_candidate(cand_[k], ip, iq, query, all, hit);
     if (hit) return false;
     return true;
   }
@@ -733,11 +731,17 @@ class Collapser {
       sl.seen = query;
       for (const std::uint32_t v : sl.v)
         if (v == ip || v == iq) return;
-      const Mesh_triangle<std::uint32_t> u = slot_triangle(f);
-      const Box b = Box::of(u.p[0], u.p[1], u.p[2]);
-      if (!b.overlaps(all)) return;
-      for (std::size_t i = 0; i < fresh_.size() && !hit; ++i)
-        if (b.overlaps(fresh_box_[i]) && !separated(i, u) && exact_test(fresh_[i], u)) hit = true;
+      if (!sl.overlaps(all)) return;
+      bool built = false;
+      Mesh_triangle<std::uint32_t> u;
+      for (std::size_t i = 0; i < fresh_.size() && !hit; ++i) {
+        if (!sl.overlaps(fresh_box_[i])) continue;
+        if (!built) {
+          u = slot_triangle(f);
+          built = true;
+        }
+        if (!separated(i, u) && exact_test(fresh_[i], u)) hit = true;
+      }
     }
   }
 
@@ -1082,18 +1086,30 @@ class Collapser {
   // Feature lines: per edge, is it one; per vertex, does it move along one.
   bool features_ = false;
   // The self-intersection guard: faces by index, alive or not, stamps, grid.
-  // Per face: the stamp of the last test that saw it and its corners (read
-  // by a candidate's test without walking the mesh; v[0] == dead once it
-  // is gone). No box: the grid's entries hold a quantized one, which
-  // leaves few candidates, and their corners' points give the exact one.
+  // Per face: its box (float, rounded outwards: half the memory traffic of
+  // the query loop), the stamp of the last test that saw it, its corners
+  // (read by a candidate's exact test without walking the mesh; v[0] ==
+  // dead once it is gone).
   struct Face_slot {
+    float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     static constexpr std::uint32_t dead = ~std::uint32_t{0};
     std::uint32_t seen = 0, v[3] = {dead, 0, 0};
     bool alive() const { return v[0] != dead; }
-    void set(const std::array<std::uint32_t, 3>& ids) {
+    void set(const Box& b, const std::array<std::uint32_t, 3>& ids) {
       v[0] = ids[0];
       v[1] = ids[1];
       v[2] = ids[2];
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = static_cast<float>(b.lo[i]);
+        if (static_cast<double>(lo[i]) > b.lo[i]) lo[i] = std::nextafter(lo[i], -std::numeric_limits<float>::infinity());
+        hi[i] = static_cast<float>(b.hi[i]);
+        if (static_cast<double>(hi[i]) < b.hi[i]) hi[i] = std::nextafter(hi[i], std::numeric_limits<float>::infinity());
+      }
+    }
+    bool overlaps(const Box& b) const {
+      for (int i = 0; i < 3; ++i)
+        if (static_cast<double>(lo[i]) > b.hi[i] || b.lo[i] > static_cast<double>(hi[i])) return false;
+      return true;
     }
   };
   std::vector<Face_slot> slot_; // in Morton order (see build_grid)
@@ -1103,7 +1119,6 @@ class Collapser {
   std::vector<std::pair<std::uint64_t, std::uint32_t>> order_;
   std::uint32_t stamp_ring_ = 0;
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
-  std::vector<std::uint32_t> cand_; // a query's candidate slots
   std::vector<H> around_;           // the survivor's incoming halfedges
   std::vector<Box> fresh_box_;
   std::vector<Fresh_plane> fresh_plane_;
