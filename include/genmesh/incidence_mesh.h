@@ -1251,9 +1251,10 @@ public:
       corner_edge[c] = sides[c] >> 1;
       corner_sign[c] = (sides[c] & 1u) ? -1 : 1;
     }
-    const bool recycle = recycle_;
+    const bool recycle = recycle_, manifold = manifold_;
     assign_incidences(pts, ends, offsets, corner_edge, corner_sign);
     recycle_ = recycle;
+    if (!manifold) update_manifold_flags_(); // a fresh mesh assumes a manifold one
   }
 
 private:
