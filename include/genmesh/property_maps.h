@@ -12,6 +12,13 @@
 // index_bound(tag, g) is the size a scratch array indexed by that index map
 // needs (it counts removed, not yet collected elements too); it is *not* the
 // live count num_vertices(g) (see concepts/genmesh/concepts/descriptor.h).
+//
+// Every backend's index maps keep a live element's index unchanged across
+// edits, so algorithms may keep index-keyed tables while they edit (simplify,
+// isotropic_remeshing): removed elements leave holes (or have their index
+// recycled by a later new element), and new elements take an index no live
+// element holds. (CGAL::Polyhedron_3 too: its adaptor keeps valid item ids and
+// numbers only new items, see <genmesh/adaptors/cgal.h>.)
 #pragma once
 
 #include <genmesh/point_traits.h>
@@ -50,22 +57,44 @@ concept HasVertexPoints = requires(G& g) {
   get(vertex_point, g);
 } && Point3<point_t<G>>;
 
-/// A graph with dense integer indices for Tag's elements, and their bound.
+/// A graph with integer indices for Tag's elements (unique, below the bound, not
+/// necessarily dense), and their bound.
 template <class G, class Tag>
 concept HasIndexMap = requires(const G& g) {
   get(Tag{}, g);
   { index_bound(Tag{}, g) } -> std::convertible_to<std::size_t>;
 };
 
-/// Whether G's index maps keep every live element's index across edits
-/// (genmesh's meshes, Surface_mesh and OpenMesh: removed elements leave
-/// holes, new ones get fresh indices). An adaptor whose indices are
-/// renumbered after an edit specializes this to false: Polyhedron_3, whose
-/// ids are made a dense numbering again after every removal
-/// (<genmesh/adaptors/cgal.h>). Algorithms that keep index-keyed tables
-/// across edits (simplify, isotropic_remeshing and its steps) refuse such a
-/// mesh at compile time instead of reading stale tables.
+/// While alive, new elements of g get fresh indices (appended) instead of
+/// reusing the indices of removed ones, on every mesh that recycles
+/// (Halfedge_mesh, Incidence_mesh, Surface_mesh: set_recycle_garbage);
+/// restores the mesh's setting when it dies. Meshes that never recycle
+/// (OpenMesh, Polyhedron_3's adaptor) need nothing. An algorithm that both
+/// removes and adds elements and orders its work by index (remeshing) holds
+/// one, so that the numbering of what it creates, and therefore its result,
+/// is the same on every backend.
 template <class G>
-inline constexpr bool indices_survive_edits = true;
+class Append_only_indices {
+public:
+  explicit Append_only_indices(G& g) : g_(g) {
+    if constexpr (recycles) {
+      was_ = g_.does_recycle_garbage();
+      g_.set_recycle_garbage(false);
+    }
+  }
+  ~Append_only_indices() {
+    if constexpr (recycles) g_.set_recycle_garbage(was_);
+  }
+  Append_only_indices(const Append_only_indices&) = delete;
+  Append_only_indices& operator=(const Append_only_indices&) = delete;
+
+private:
+  static constexpr bool recycles = requires(G& g) {
+    { g.does_recycle_garbage() } -> std::convertible_to<bool>;
+    g.set_recycle_garbage(false);
+  };
+  G& g_;
+  bool was_ = false;
+};
 
 } // namespace genmesh

@@ -18,15 +18,28 @@
 //   live count only when sm has no removed elements (after collect_garbage()).
 //   Iterate vertices(g) for live elements; size scratch by index_bound.
 // - Polyhedron_3 has index maps only when its items carry ids
-//   (CGAL::Polyhedron_items_with_id_3). get(genmesh::vertex_index, p) then
-//   makes sure the ids are a valid numbering, renumbering them in iteration
-//   order if not (writing to the ids of a const polyhedron, as CGAL's own
-//   get_initialized_*_index_map does). The check is O(size) once after each
-//   edit and O(1) after that (a per-thread stamp of sizes and last elements,
-//   see detail::ensure_polyhedron_ids), so asking for the map per element
-//   costs nothing; maps obtained before a later edit go stale. Code that
-//   writes ids by hand behind genmesh's back between two calls, keeping
-//   sizes and last elements, must renumber them validly itself. A Polyhedron_3 without ids has points but no index maps:
+//   (CGAL::Polyhedron_items_with_id_3); the index of an element is its id.
+//   Contract: the ids genmesh reads are unique and below index_bound (for
+//   halfedges, opposite ones are 2k and 2k+1, and an edge's id is k), and an
+//   element's id never changes while it lives, so index-keyed tables stay
+//   valid across edits (simplify and isotropic_remeshing keep such tables).
+//   Removed elements leave holes (ids are sparse); an element that has no
+//   valid id — a new one (CGAL gives new items the id -1), one whose id an
+//   earlier element in list order holds (items copied by Polyhedron_3's
+//   member functions), one at or above the bound — gets a fresh id from the
+//   bound up, which then grows (it only grows, restarting at 0 only when no
+//   element keeps an id). This happens when genmesh next looks:
+//   get(genmesh::vertex_index, p), index_bound(…, p), or a map's get on an
+//   element whose id is still -1 (writing to the ids of a const polyhedron,
+//   as CGAL's own get_initialized_*_index_map does). A look is O(1) after
+//   removals that spared each list's last element (the last element's
+//   address and id, recorded at the previous look, are still at the end),
+//   O(added) when elements were appended behind it, and O(size) otherwise
+//   (that last element removed, items copied with their ids, a polyhedron
+//   the thread has not seen): a per-thread record of the last 16 polyhedra,
+//   see detail::ensure_polyhedron_ids. Ids a user
+//   writes by hand are kept if valid, except ones at or above the bound the
+//   thread recorded. A polyhedron without ids has points but no index maps:
 //   HasIndexMap is false and genmesh code must fall back to hashing
 //   descriptors.
 //
@@ -79,6 +92,7 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/squared_distance_3.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <iterator>
 #include <memory>
@@ -263,124 +277,221 @@ inline constexpr bool polyhedron_has_ids =
     CGAL::internal::Has_member_id<typename Poly::Halfedge>::value &&
     CGAL::internal::Has_member_id<typename Poly::Facet>::value;
 
-// True if id(x) for x in [first, last) is a permutation of [0, n).
-template <class It, class Id>
-bool ids_are_numbering(It first, It last, std::size_t n, Id id) {
-  std::vector<bool> seen(n, false);
-  for (; first != last; ++first) {
-    const std::size_t i = id(*first);
-    if (i >= n || seen[i]) return false;
-    seen[i] = true;
+// The id CGAL gives a new item (Polyhedron_items_with_id_3's default):
+// "missing", numbered at the next look.
+inline constexpr std::size_t polyhedron_no_id = static_cast<std::size_t>(-1);
+
+// Without a record of a polyhedron, an id at or above this many times the
+// list's size counts as missing too: a scratch array is sized by the bound,
+// so one stray huge id must not allocate gigabytes. (Sparse ids of a mesh
+// simplified to 1/64 of its size are still kept.)
+inline constexpr std::size_t polyhedron_max_sparsity = 64;
+
+// What this thread last knew of a polyhedron's ids: per list (0 vertices,
+// 1 halfedges, 2 facets) the bound (one above the largest id; even for
+// halfedges), and the list's size and last element (address and id) just
+// after the last numbering.
+struct Polyhedron_id_record {
+  const void* poly = nullptr;
+  std::size_t bound[3] = {0, 0, 0};
+  std::size_t size[3] = {0, 0, 0};
+  const void* last[3] = {nullptr, nullptr, nullptr};
+  std::size_t last_id[3] = {0, 0, 0};
+};
+
+template <int K, class Poly>
+auto polyhedron_list(Poly& p) {
+  if constexpr (K == 0) return std::pair(p.vertices_begin(), p.vertices_end());
+  else if constexpr (K == 1) return std::pair(p.halfedges_begin(), p.halfedges_end());
+  else return std::pair(p.facets_begin(), p.facets_end());
+}
+template <int K, class Poly>
+std::size_t polyhedron_list_size(const Poly& p) {
+  if constexpr (K == 0) return p.size_of_vertices();
+  else if constexpr (K == 1) return p.size_of_halfedges();
+  else return p.size_of_facets();
+}
+
+template <int K, class Poly>
+void record_list(Poly& p, Polyhedron_id_record& r) {
+  const auto [first, last] = polyhedron_list<K>(p);
+  r.size[K] = polyhedron_list_size<K>(p);
+  r.last[K] = nullptr;
+  r.last_id[K] = 0;
+  if (first == last) return;
+  const auto& x = *std::prev(last);
+  r.last[K] = &x;
+  r.last_id[K] = x.id();
+}
+
+template <int K, class Poly>
+bool list_unchanged(Poly& p, const Polyhedron_id_record& r) {
+  const auto [first, last] = polyhedron_list<K>(p);
+  if (polyhedron_list_size<K>(p) != r.size[K]) return false;
+  if (first == last) return r.last[K] == nullptr;
+  const auto& x = *std::prev(last);
+  return &x == r.last[K] && x.id() == r.last_id[K];
+}
+
+// The O(new) path. Polyhedron_3 appends new items at the end of its lists
+// and removes items from anywhere, and removing leaves the other ids valid.
+// So if, walking back from the end over missing ids (at or above the bound),
+// one reaches the element recorded as last (same address, same id), then
+// every element before it is an old one with its old, valid id, and only the
+// walked-over ones need ids: fresh ones from the bound up, in list order
+// (halfedges: 2k to the first of a new pair, 2k+1 to its opposite). Returns
+// false, changing nothing the full numbering would not, when that is not so
+// (the recorded last was removed, or an item was appended with a copied id).
+template <int K, class Poly>
+bool number_appended(Poly& p, Polyhedron_id_record& r) {
+  const auto [first, last] = polyhedron_list<K>(p);
+  std::size_t bound = r.bound[K], appended = 0;
+  auto it = last;
+  while (it != first && std::prev(it)->id() >= bound) {
+    --it;
+    ++appended;
   }
+  if (it == first) {
+    bound = 0; // no element keeps an id: a fresh numbering from 0
+  } else {
+    const auto& kept = *std::prev(it);
+    if (&kept != r.last[K] || kept.id() != r.last_id[K]) return false;
+    if (polyhedron_list_size<K>(p) - appended > r.size[K]) return false;
+  }
+  if constexpr (K == 1) {
+    for (auto h = it; h != last; ++h) h->id() = polyhedron_no_id;
+    for (auto h = it; h != last; ++h) {
+      if (h->id() != polyhedron_no_id) continue;
+      if (h->opposite()->id() != polyhedron_no_id) return false;
+      h->id() = bound++;
+      h->opposite()->id() = bound++;
+    }
+  } else {
+    for (auto x = it; x != last; ++x) x->id() = bound++;
+  }
+  r.bound[K] = bound;
+  record_list<K>(p, r);
   return true;
 }
 
-// Renumbers the polyhedron's vertex/halfedge/face ids where they are not a
-// valid numbering (halfedge ids paired: opposite halfedges get 2k and 2k+1,
-// so edge id = halfedge id / 2), touching nothing when they already are one.
-// O(size).
-template <class Poly>
-void number_polyhedron_ids(Poly& p) {
-  if (!ids_are_numbering(p.vertices_begin(), p.vertices_end(), p.size_of_vertices(),
-                         [](const auto& v) { return v.id(); })) {
-    std::size_t i = 0;
-    for (auto v = p.vertices_begin(); v != p.vertices_end(); ++v) v->id() = i++;
-  }
-  bool paired = ids_are_numbering(p.halfedges_begin(), p.halfedges_end(),
-                                  p.size_of_halfedges(), [](const auto& h) { return h.id(); });
-  for (auto h = p.halfedges_begin(); paired && h != p.halfedges_end(); ++h)
-    paired = (h->id() ^ std::size_t{1}) == h->opposite()->id();
-  if (!paired) {
-    std::size_t i = 0;
+// The O(size) path: keeps every id that is below the limit and not taken by
+// an earlier element in list order (halfedges: pairs 2k/2k+1 with their
+// opposites), and gives the others fresh ids from the bound up, in list
+// order. The bound only grows, except that it restarts at 0 when no element
+// keeps an id (a polyhedron cleared and rebuilt, or a new one at a recorded
+// address).
+template <int K, class Poly>
+void number_list(Poly& p, Polyhedron_id_record& r, bool known) {
+  const std::size_t n = polyhedron_list_size<K>(p);
+  const std::size_t limit = known ? r.bound[K] : polyhedron_max_sparsity * (n + 1);
+  std::size_t kept_bound = 0;
+  if constexpr (K == 1) {
+    auto pair_kept = [limit](const auto& h) {
+      const std::size_t i = h->id(), j = h->opposite()->id();
+      return i < limit && j < limit && (i ^ std::size_t{1}) == j;
+    };
+    for (auto e : edges(p))
+      if (pair_kept(e.halfedge())) kept_bound = std::max(kept_bound, (e.halfedge()->id() | 1) + 1);
+    std::vector<bool> seen(kept_bound / 2, false);
+    std::size_t next = kept_bound == 0 ? 0 : (known ? std::max(r.bound[K], kept_bound) : kept_bound);
     for (auto e : edges(p)) {
-      e.halfedge()->id() = i++;
-      e.halfedge()->opposite()->id() = i++;
+      const auto h = e.halfedge();
+      if (pair_kept(h) && !seen[h->id() / 2]) {
+        seen[h->id() / 2] = true;
+      } else {
+        h->id() = next++;
+        h->opposite()->id() = next++;
+      }
     }
+    r.bound[K] = next;
+  } else {
+    const auto [first, last] = polyhedron_list<K>(p);
+    for (auto x = first; x != last; ++x)
+      if (x->id() < limit) kept_bound = std::max(kept_bound, x->id() + 1);
+    std::vector<bool> seen(kept_bound, false);
+    std::size_t next = kept_bound == 0 ? 0 : (known ? std::max(r.bound[K], kept_bound) : kept_bound);
+    for (auto x = first; x != last; ++x) {
+      if (x->id() < limit && !seen[x->id()]) {
+        seen[x->id()] = true;
+      } else {
+        x->id() = next++;
+      }
+    }
+    r.bound[K] = next;
   }
-  if (!ids_are_numbering(p.facets_begin(), p.facets_end(), p.size_of_facets(),
-                         [](const auto& f) { return f.id(); })) {
-    std::size_t i = 0;
-    for (auto f = p.facets_begin(); f != p.facets_end(); ++f) f->id() = i++;
-  }
+  record_list<K>(p, r);
 }
 
-// What a polyhedron looked like when its ids were last found to be a valid
-// numbering: its address, its three sizes, and the address and id of the
-// last vertex, halfedge and facet. Polyhedron_3 only appends elements (to
-// the end of its lists, with the id -1 of a new item or the id copied from
-// a live one) and removes them; so after any edit that could break the
-// numbering, a size differs or the last element is another one, at another
-// address or (memory reused) with another id. Comparing stamps is O(1).
-struct Polyhedron_id_stamp {
-  const void* poly = nullptr;
-  std::size_t sizes[3] = {0, 0, 0};
-  const void* last[3] = {nullptr, nullptr, nullptr};
-  std::size_t last_id[3] = {0, 0, 0};
-  bool operator==(const Polyhedron_id_stamp&) const = default;
-};
-
-template <class It>
-void stamp_last(It first, It last, const void*& address, std::size_t& id) {
-  if (first == last) return;
-  const auto& x = *std::prev(last);
-  address = &x;
-  id = x.id();
+template <int K, class Poly>
+void ensure_list(Poly& p, Polyhedron_id_record& r, bool known) {
+  if (known && list_unchanged<K>(p, r)) return;
+  if (known && number_appended<K>(p, r)) return;
+  number_list<K>(p, r, known);
 }
 
-template <class Poly>
-Polyhedron_id_stamp polyhedron_id_stamp(const Poly& p) {
-  Polyhedron_id_stamp s;
-  s.poly = &p;
-  s.sizes[0] = p.size_of_vertices();
-  s.sizes[1] = p.size_of_halfedges();
-  s.sizes[2] = p.size_of_facets();
-  stamp_last(p.vertices_begin(), p.vertices_end(), s.last[0], s.last_id[0]);
-  stamp_last(p.halfedges_begin(), p.halfedges_end(), s.last[1], s.last_id[1]);
-  stamp_last(p.facets_begin(), p.facets_end(), s.last[2], s.last_id[2]);
-  return s;
-}
-
-// Makes the polyhedron's ids a valid numbering (number_polyhedron_ids) unless
-// this thread found them valid since the polyhedron's last edit: a stamp
-// comparison, O(1), so get(genmesh::vertex_index, p) may be called per
-// element. The stamps of the last 16 polyhedra are kept per thread (a
-// polyhedron that drops out is checked again, O(size), on its next use).
-// Writes to the ids of a const polyhedron, as CGAL's own
+// Makes the polyhedron's ids valid — unique, below the bound, halfedge
+// pairs 2k/2k+1 — without changing a valid id (see the header's comment).
+// Returns this thread's record of the polyhedron, whose bounds are the index
+// bounds. O(1) when each list's recorded last element is still its last
+// (removals elsewhere), O(appended) when elements were only appended behind
+// it, O(size) otherwise (the last element removed, items copied with their
+// ids, a polyhedron this thread has not seen). Records of the last 16 polyhedra are kept per
+// thread; one that drops out is numbered as unknown on its next use (valid
+// ids kept). Writes to the ids of a const polyhedron, as CGAL's own
 // get_initialized_*_index_map does.
 template <class Poly>
-void ensure_polyhedron_ids(const Poly& cp) {
+const Polyhedron_id_record& ensure_polyhedron_ids(const Poly& cp) {
   constexpr std::size_t slots = 16;
-  thread_local Polyhedron_id_stamp seen[slots];
-  thread_local std::size_t next_slot = 0;
-  const Polyhedron_id_stamp now = polyhedron_id_stamp(cp);
-  std::size_t slot = slots;
-  for (std::size_t i = 0; i < slots; ++i) {
-    if (seen[i] == now) return;
-    if (seen[i].poly == now.poly) slot = i;
+  thread_local Polyhedron_id_record records[slots];
+  thread_local std::size_t last_used = 0, next_slot = 0;
+  std::size_t slot = last_used;
+  if (records[slot].poly != &cp) {
+    slot = slots;
+    for (std::size_t i = 0; i < slots; ++i)
+      if (records[i].poly == &cp) slot = i;
   }
+  const bool known = slot != slots;
+  if (!known) {
+    slot = next_slot++ % slots;
+    records[slot] = Polyhedron_id_record{};
+    records[slot].poly = &cp;
+  }
+  last_used = slot;
   Poly& p = const_cast<Poly&>(cp);
-  number_polyhedron_ids(p);
-  if (slot == slots) slot = next_slot++ % slots;
-  seen[slot] = polyhedron_id_stamp(cp);
+  Polyhedron_id_record& r = records[slot];
+  ensure_list<0>(p, r, known);
+  ensure_list<1>(p, r, known);
+  ensure_list<2>(p, r, known);
+  return r;
 }
 
-// The index map of a Polyhedron_3 whose items carry ids.
-template <class Handle>
+// The index map of a Polyhedron_3 whose items carry ids: the item's id. An
+// element added since the ids were last made valid (its id still CGAL's
+// missing -1) gets its id here, so maps kept across edits stay usable.
+template <class Poly, class Handle>
 struct Polyhedron_id_map {
   using key_type = Handle;
   using value_type = std::size_t;
   using reference = std::size_t;
   using category = boost::readable_property_map_tag;
-  friend std::size_t get(Polyhedron_id_map, const Handle& h) { return h->id(); }
+  const Poly* poly = nullptr;
+  friend std::size_t get(const Polyhedron_id_map& m, const Handle& h) {
+    if (h->id() == polyhedron_no_id && m.poly != nullptr) [[unlikely]]
+      ensure_polyhedron_ids(*m.poly);
+    return h->id();
+  }
 };
 
-template <class Edge>
+template <class Poly, class Edge>
 struct Polyhedron_edge_id_map {
   using key_type = Edge;
   using value_type = std::size_t;
   using reference = std::size_t;
   using category = boost::readable_property_map_tag;
-  friend std::size_t get(Polyhedron_edge_id_map, const Edge& e) {
+  const Poly* poly = nullptr;
+  friend std::size_t get(const Polyhedron_edge_id_map& m, const Edge& e) {
+    if (e.halfedge()->id() == polyhedron_no_id && m.poly != nullptr) [[unlikely]]
+      ensure_polyhedron_ids(*m.poly);
     return e.halfedge()->id() / 2;
   }
 };
@@ -392,19 +503,19 @@ struct Polyhedron_index_map {
 };
 template <class Poly>
 struct Polyhedron_index_map<Poly, vertex_index_t, true> {
-  using type = Polyhedron_id_map<typename boost::graph_traits<Poly>::vertex_descriptor>;
+  using type = Polyhedron_id_map<Poly, typename boost::graph_traits<Poly>::vertex_descriptor>;
 };
 template <class Poly>
 struct Polyhedron_index_map<Poly, halfedge_index_t, true> {
-  using type = Polyhedron_id_map<typename boost::graph_traits<Poly>::halfedge_descriptor>;
+  using type = Polyhedron_id_map<Poly, typename boost::graph_traits<Poly>::halfedge_descriptor>;
 };
 template <class Poly>
 struct Polyhedron_index_map<Poly, face_index_t, true> {
-  using type = Polyhedron_id_map<typename boost::graph_traits<Poly>::face_descriptor>;
+  using type = Polyhedron_id_map<Poly, typename boost::graph_traits<Poly>::face_descriptor>;
 };
 template <class Poly>
 struct Polyhedron_index_map<Poly, edge_index_t, true> {
-  using type = Polyhedron_edge_id_map<typename boost::graph_traits<Poly>::edge_descriptor>;
+  using type = Polyhedron_edge_id_map<Poly, typename boost::graph_traits<Poly>::edge_descriptor>;
 };
 
 } // namespace detail
@@ -432,7 +543,7 @@ auto get(vertex_point_t, const GENMESH_POLYHEDRON& p) {
     requires detail::polyhedron_has_ids<GENMESH_POLYHEDRON>                            \
   auto get(TAG, const GENMESH_POLYHEDRON& p) {                                         \
     detail::ensure_polyhedron_ids(p);                                                  \
-    return typename detail::Polyhedron_index_map<GENMESH_POLYHEDRON, TAG>::type{};     \
+    return typename detail::Polyhedron_index_map<GENMESH_POLYHEDRON, TAG>::type{&p};   \
   }                                                                                    \
   template <GENMESH_POLYHEDRON_TPARAMS>                                                \
     requires detail::polyhedron_has_ids<GENMESH_POLYHEDRON>                            \
@@ -445,30 +556,27 @@ GENMESH_POLYHEDRON_INDEX_GET(edge_index_t)
 GENMESH_POLYHEDRON_INDEX_GET(face_index_t)
 #undef GENMESH_POLYHEDRON_INDEX_GET
 
-// Polyhedron_3's ids are renumbered densely after a removal (above), so
-// index-keyed tables kept across edits go stale: see indices_survive_edits.
-template <GENMESH_POLYHEDRON_TPARAMS>
-inline constexpr bool indices_survive_edits<GENMESH_POLYHEDRON> = false;
-
+/// The stored bounds (one above the largest id, growing as elements are
+/// added), not the sizes: ids are sparse after removals.
 template <GENMESH_POLYHEDRON_TPARAMS>
   requires detail::polyhedron_has_ids<GENMESH_POLYHEDRON>
 std::size_t index_bound(vertex_index_t, const GENMESH_POLYHEDRON& p) {
-  return p.size_of_vertices();
+  return detail::ensure_polyhedron_ids(p).bound[0];
 }
 template <GENMESH_POLYHEDRON_TPARAMS>
   requires detail::polyhedron_has_ids<GENMESH_POLYHEDRON>
 std::size_t index_bound(halfedge_index_t, const GENMESH_POLYHEDRON& p) {
-  return p.size_of_halfedges();
+  return detail::ensure_polyhedron_ids(p).bound[1];
 }
 template <GENMESH_POLYHEDRON_TPARAMS>
   requires detail::polyhedron_has_ids<GENMESH_POLYHEDRON>
 std::size_t index_bound(edge_index_t, const GENMESH_POLYHEDRON& p) {
-  return p.size_of_halfedges() / 2;
+  return detail::ensure_polyhedron_ids(p).bound[1] / 2;
 }
 template <GENMESH_POLYHEDRON_TPARAMS>
   requires detail::polyhedron_has_ids<GENMESH_POLYHEDRON>
 std::size_t index_bound(face_index_t, const GENMESH_POLYHEDRON& p) {
-  return p.size_of_facets();
+  return detail::ensure_polyhedron_ids(p).bound[2];
 }
 
 } // namespace genmesh

@@ -86,10 +86,6 @@ inline constexpr std::uint8_t e_fixed = 2;       // never split, collapsed or fl
 
 template <Remeshable G, class Visitor = Mutation_visitor>
 class Remesher {
-  static_assert(indices_survive_edits<G>,
-                "genmesh: isotropic remeshing keeps index-keyed tables across edits, and this mesh renumbers its "
-                "indices after an edit (Polyhedron_3: use CGAL::Surface_mesh, genmesh::Halfedge_mesh "
-                "or OpenMesh; see indices_survive_edits in <genmesh/property_maps.h>)");
 public:
   using V = vertex_descriptor_t<G>;
   using H = halfedge_descriptor_t<G>;
@@ -99,7 +95,7 @@ public:
 
   /// The visitor's per-operation hooks see every split, collapse and flip.
   Remesher(G& g, const Remeshing_options& o, const char* who, Visitor& visitor)
-      : g_(g), o_(o), who_(who), vis_(&visitor), pm_(get(vertex_point, g)), vi_(get(vertex_index, g)),
+      : g_(g), append_only_(g), o_(o), who_(who), vis_(&visitor), pm_(get(vertex_point, g)), vi_(get(vertex_index, g)),
         ei_(get(edge_index, g)), fi_(get(face_index, g)) {
     check_options();
     prepare_faces();
@@ -110,7 +106,7 @@ public:
   }
 
   Remesher(G& g, const Remeshing_options& o, const char* who)
-      : g_(g), o_(o), who_(who), own_vis_(std::in_place), vis_(&*own_vis_), pm_(get(vertex_point, g)),
+      : g_(g), append_only_(g), o_(o), who_(who), own_vis_(std::in_place), vis_(&*own_vis_), pm_(get(vertex_point, g)),
         vi_(get(vertex_index, g)), ei_(get(edge_index, g)), fi_(get(face_index, g)) {
     check_options();
     prepare_faces();
@@ -966,6 +962,10 @@ private:
   }
 
   G& g_;
+  // New elements get fresh indices while the remesher lives: its work is
+  // ordered by index, and recycled indices (LIFO free lists) are not what
+  // OpenMesh or Polyhedron_3 give, so the result would differ there.
+  Append_only_indices<G> append_only_;
   const Remeshing_options& o_;
   const char* who_;
   std::optional<std::remove_cvref_t<Visitor>> own_vis_;

@@ -102,10 +102,6 @@ struct Vertex_data_of<Policy> {
 
 template <class G, class Policy, class Visitor>
 class Collapser {
-  static_assert(indices_survive_edits<G>,
-                "genmesh: simplify keeps index-keyed tables across edits, and this mesh renumbers its "
-                "indices after an edit (Polyhedron_3: use CGAL::Surface_mesh, genmesh::Halfedge_mesh "
-                "or OpenMesh; see indices_survive_edits in <genmesh/property_maps.h>)");
   using V = vertex_descriptor_t<G>;
   using H = halfedge_descriptor_t<G>;
   using E = edge_descriptor_t<G>;
