@@ -287,10 +287,11 @@ public:
   /// orientation (caps and slivers that the valence flips and smoothing left;
   /// pmp-library's remove_caps, widened). Two passes.
   std::size_t remove_bad_triangles() {
-    // 36°, the quality aimed at (issue 13): a threshold of 30° left 45
-    // triangles between 32° and 36° on armadillo after two Loop levels
-    // (832k faces), 36° leaves 23 and raises the minimum from 32.7° to
-    // 33.5°, at no measurable cost; valence 6 share unchanged (±0.1 %).
+    // 36°, the quality aimed at (issue 13): on armadillo after two Loop
+    // levels (832k faces) a threshold of 30° left 39 triangles below 36°,
+    // 36° leaves 20, at no measurable cost, valence 6 share unchanged
+    // (±0.1 %); which triangle is the worst stays chaotic
+    // (docs/benchmarks.md, session 4).
     const double bad = std::cos(36.0 * std::numbers::pi / 180.0); // cos of the smallest angle we keep
     // The first pass looks only at the edges of triangles with an angle
     // below 36° (found without roots), the second at what the first changed.
