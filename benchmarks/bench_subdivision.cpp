@@ -1,5 +1,6 @@
 // Subdivision side by side: genmesh on Halfedge_mesh, genmesh on
-// CGAL::Surface_mesh, CGAL::Subdivision_method_3 on Surface_mesh and
+// CGAL::Surface_mesh (and on Incidence_mesh for Loop × 3 and Catmull-Clark
+// × 2: its bulk relink against its local operations), CGAL::Subdivision_method_3 on Surface_mesh and
 // OpenMesh's uniform subdividers (LoopT, CatmullClarkT, Sqrt3T,
 // ModifiedButterflyT), on armadillo.off (libcgal-demo, 52k triangles: Loop × 3,
 // Catmull-Clark × 2, √3 × 3, butterfly × 3, midpoint × 3) and on a 1.3M-triangle icosphere
@@ -16,6 +17,7 @@
 #include <genmesh/adaptors/cgal.h>
 #include <genmesh/generators.h>
 #include <genmesh/halfedge_mesh.h>
+#include <genmesh/incidence_mesh.h>
 #include <genmesh/io.h>
 #include <genmesh/soup_to_mesh.h>
 #include <genmesh/subdivision.h>
@@ -92,6 +94,23 @@ const G& input(Input in) {
   return sphere;
 }
 
+/// The input with one removed vertex at the end of the index range: not
+/// dense, so the in-place schemes take the local operations (the path a dense
+/// Incidence_mesh took before its bulk relink); the first new vertex reuses
+/// the slot, so the result is the same mesh.
+template <class G>
+const G& input_with_free_slot(Input in) {
+  auto make_one = [](Input i) {
+    G g = make<G>(i);
+    if constexpr (requires { g.remove_vertex(g.add_vertex()); }) g.remove_vertex(g.add_vertex());
+    return g;
+  };
+  static const G armadillo = make_one(Input::armadillo);
+  if (in == Input::armadillo) return armadillo;
+  static const G sphere = make_one(Input::sphere);
+  return sphere;
+}
+
 template <class G>
 std::size_t face_count(const G& g) {
   if constexpr (std::is_same_v<G, Om_tri> || std::is_same_v<G, Om_poly>) return g.n_faces();
@@ -99,12 +118,12 @@ std::size_t face_count(const G& g) {
 }
 
 template <class G, class Run>
-void run_case(benchmark::State& state, Input in, Run run) {
+void run_case(benchmark::State& state, Input in, Run run, bool free_slot = false) {
   std::size_t faces = 0;
   long long peak = 0;
   for (auto _ : state) {
     state.PauseTiming();
-    G g = input<G>(in);
+    G g = free_slot ? input_with_free_slot<G>(in) : input<G>(in);
     const long long before = genmesh_bench::live_bytes();
     genmesh_bench::reset_peak();
     state.ResumeTiming();
@@ -172,6 +191,20 @@ void register_all() {
         [=](auto& g) { sm3::CatmullClark_subdivision(g, CGAL::parameters::number_of_iterations(l)); },
         "CatmullClarkT",
         Om_run<Om_poly>{[=](Om_poly& g) { openmesh<OpenMesh::Subdivider::Uniform::CatmullClarkT>(g, l); }});
+  }
+  // Incidence_mesh: the bulk relink (a dense input) against its local
+  // operations (the same input with a free vertex slot), same result.
+  for (Case c : {Case{"Loop3", Input::armadillo, 3}, Case{"CatmullClark2", Input::armadillo, 2}}) {
+    const int l = c.levels;
+    const bool loop = c.name == std::string("Loop3");
+    auto sub = [=](auto& g) {
+      if (loop) loop_subdivision(g, {.iterations = l});
+      else catmull_clark_subdivision(g, {.iterations = l});
+    };
+    reg(std::string(c.name) + "/genmesh_Incidence_mesh",
+        [=](benchmark::State& s) { run_case<genmesh::Incidence_mesh<>>(s, c.in, sub); });
+    reg(std::string(c.name) + "/genmesh_Incidence_mesh_local_operations",
+        [=](benchmark::State& s) { run_case<genmesh::Incidence_mesh<>>(s, c.in, sub, true); });
   }
   reg("Sqrt3_3/genmesh_Halfedge_mesh", [](benchmark::State& s) {
     run_case<Halfedge_mesh>(s, Input::armadillo, [](auto& g) { sqrt3_subdivision(g, {.iterations = 3}); });

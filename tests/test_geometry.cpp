@@ -455,6 +455,10 @@ TYPED_TEST(Spatial_index, ClosestPointEqualsBruteForce) {
       }
       const auto r = tree.closest_point(q);
       ASSERT_NEAR(std::sqrt(r.squared_distance), std::sqrt(best), 1e-12 * diag) << it;
+      // Started at any triangle's leaf (closest_point_from): the same distance.
+      const auto from = tree.closest_point_from(q, std::numeric_limits<double>::infinity(), rng() % tree.size());
+      ASSERT_NEAR(std::sqrt(from.squared_distance), std::sqrt(best), 1e-12 * diag) << it;
+      ASSERT_LT((from.point - q).squaredNorm() - from.squared_distance, 1e-12 * diag * diag) << it;
       if (best > 0) {  // a bound below the distance finds nothing, and says so
         const auto none = tree.closest_point(q, 0.25 * best);
         ASSERT_EQ(none.face, boost::graph_traits<TypeParam>::null_face()) << it;

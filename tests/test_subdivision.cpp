@@ -21,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <span>
@@ -1084,10 +1085,21 @@ TYPED_TEST(Subdivision, VertexPointMapIsReadAndWritten) {
 }
 
 // ---------------------------------------------------------------------------
-// Incidence_mesh refines with its own operations, not on a copy: its native
-// split_edge / split_face report to the visitor with Incidence_mesh
-// descriptors (a copy of another type would report nothing), once per old
-// edge and per cut, and the result's incidence matrices still compose to zero.
+// Incidence_mesh refines with its own operations, not on a copy. With
+// removed elements waiting (here one removed vertex, whose slot the first new
+// vertex reuses) it takes the local operations: its native split_edge /
+// split_face report to the visitor with Incidence_mesh descriptors (a copy of
+// another type would report nothing), once per old edge and per cut, and the
+// result's incidence matrices still compose to zero. (Without removed
+// elements it takes its native bulk relink: next test.)
+
+/// g with one removed vertex at the end of the index range: not dense, so
+/// the in-place schemes take the local operations, and the first new vertex
+/// recycles the slot, so elements get the indices a dense g would give them.
+genmesh_test::Incidence_mesh with_free_vertex_slot(genmesh_test::Incidence_mesh g) {
+  g.remove_vertex(g.add_vertex());
+  return g;
+}
 
 struct Count_incidence_operations : genmesh::Mutation_visitor {
   std::size_t splits = 0, cuts = 0;
@@ -1100,7 +1112,7 @@ TEST(SubdivisionNative, IncidenceMeshRefinesWithItsOwnOperations) {
     SCOPED_TRACE(name(scheme));
     const Polygon_soup soup = scheme == Scheme::catmull_clark ? genmesh::make_torus(8, 6, false)
                                                               : genmesh::make_grid_with_hole(5);
-    auto g = mesh_of<genmesh_test::Incidence_mesh>(soup);
+    auto g = with_free_vertex_slot(mesh_of<genmesh_test::Incidence_mesh>(soup));
     std::size_t splits = 0, cuts = 0; // expected: per level, every edge split; every face cut
     {
       auto h = mesh_of<genmesh_test::Halfedge_mesh>(soup);
@@ -1130,6 +1142,96 @@ TEST(SubdivisionNative, IncidenceMeshRefinesWithItsOwnOperations) {
     const Eigen::SparseMatrix<int> d0 = g.d0(), d1 = g.d1();
     EXPECT_EQ(Eigen::SparseMatrix<int>(d1 * d0).norm(), 0);
     EXPECT_EQ(static_cast<std::size_t>(d0.rows()), static_cast<std::size_t>(num_edges(g)));
+  }
+}
+
+/// Every edge's ends by edge index and every face's vertex cycle (from its
+/// lowest vertex) by face index: the element numbering, edge directions
+/// included.
+struct Numbered_elements {
+  std::vector<std::array<std::size_t, 2>> edge_ends;
+  std::vector<std::vector<std::size_t>> face_cycles;
+  bool operator==(const Numbered_elements&) const = default;
+};
+template <class G>
+Numbered_elements numbered_elements(const G& g) {
+  Numbered_elements n;
+  auto vi = get(genmesh::vertex_index, g);
+  for (auto e : edges(g)) {
+    const auto h = halfedge(e, g);
+    n.edge_ends.push_back({get(vi, source(h, g)), get(vi, target(h, g))});
+  }
+  for (auto f : faces(g)) {
+    std::vector<std::size_t> c;
+    auto h = halfedge(f, g);
+    do c.push_back(get(vi, target(h, g)));
+    while ((h = next(h, g)) != halfedge(f, g));
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+    n.face_cycles.push_back(std::move(c));
+  }
+  return n;
+}
+
+// Without removed elements, Incidence_mesh takes the in-place schemes' bulk
+// path in its own form: the level's result computed from the old mesh and
+// written into its four matrices in one pass (genmesh_native_relink), no
+// local operation called. It numbers every element exactly as the bulk path
+// of Halfedge_mesh (the generic append, linked with set_next) does: the same
+// edge ends (directions included) and face cycles at every index, the same
+// points, the same crease sharpness per edge. Its local operations (taken
+// when an element was removed) give the same points at the same indices and
+// the same soup, but their split_face gives an inner edge the other
+// direction, so after two levels the edge numbering differs.
+TEST(SubdivisionNative, IncidenceMeshBulkRelinkNumbersLikeTheBulkPath) {
+  namespace ds = genmesh::detail::subdivision;
+  static_assert(ds::Has_native_relink<genmesh_test::Incidence_mesh>);
+  for (Scheme scheme : {Scheme::loop, Scheme::catmull_clark, Scheme::butterfly, Scheme::midpoint}) {
+    for (const Polygon_soup& soup : {genmesh::make_grid_with_hole(5), genmesh::make_icosphere(1),
+                                     scheme == Scheme::catmull_clark ? genmesh::make_torus(8, 6, false)
+                                                                     : genmesh::make_torus(8, 6, true)}) {
+      SCOPED_TRACE(name(scheme) + " on " + std::to_string(soup.num_faces()) + " faces");
+      auto dense = mesh_of<genmesh_test::Incidence_mesh>(soup);
+      auto local = with_free_vertex_slot(dense);
+      auto bulk = mesh_of<genmesh_test::Halfedge_mesh>(soup);
+      auto dc = genmesh::make_crease_map(dense);
+      auto lc = genmesh::make_crease_map(local);
+      auto bc = genmesh::make_crease_map(bulk);
+      std::size_t k = 0;
+      for (auto e : edges(dense)) put(dc, e, (k++ % 5) * 0.75);
+      k = 0;
+      for (auto e : edges(local)) put(lc, e, (k++ % 5) * 0.75);
+      k = 0;
+      for (auto e : edges(bulk)) put(bc, e, (k++ % 5) * 0.75);
+      Count_incidence_operations on_dense, on_local;
+      auto subdivide = [&](auto& g, auto crease, auto&& visitor) {
+        switch (scheme) {
+        case Scheme::loop:
+          genmesh::loop_subdivision(g, genmesh::Loop_options{.iterations = 2, .crease_map = crease}, visitor);
+          break;
+        case Scheme::catmull_clark:
+          genmesh::catmull_clark_subdivision(g, genmesh::Catmull_clark_options{.iterations = 2, .crease_map = crease},
+                                             visitor);
+          break;
+        case Scheme::butterfly: genmesh::butterfly_subdivision(g, {.iterations = 2}, visitor); break;
+        default: genmesh::midpoint_subdivision(g, {.iterations = 2}, visitor); break;
+        }
+      };
+      subdivide(dense, dc, on_dense);
+      subdivide(local, lc, on_local);
+      subdivide(bulk, bc, genmesh::Mutation_visitor{});
+      EXPECT_EQ(on_dense.splits + on_dense.cuts, 0u); // the bulk relink ran, no local operation
+      EXPECT_GT(on_local.splits, 0u);                 // the local operations ran
+      EXPECT_EQ(numbered_elements(dense), numbered_elements(bulk));
+      ASSERT_EQ(num_vertices(dense), num_vertices(bulk));
+      for (auto v : vertices(dense)) {
+        EXPECT_EQ(dense.point(v), genmesh::to_eigen(bulk.point(genmesh::Vertex_index(v.idx())))) << v.idx();
+        EXPECT_EQ(dense.point(v), local.point(v)) << v.idx();
+      }
+      for (auto e : edges(dense)) EXPECT_EQ(get(dc, e), get(bc, genmesh::Edge_index(e.idx()))) << e.idx();
+      EXPECT_EQ(Eigen::SparseMatrix<int>(dense.d1() * dense.d0()).norm(), 0);
+      EXPECT_TRUE(genmesh::check_mesh(dense).ok());
+      EXPECT_EQ(genmesh::canonical(genmesh::to_soup(dense)), genmesh::canonical(genmesh::to_soup(local)));
+    }
   }
 }
 

@@ -158,7 +158,7 @@ public:
   /// Bytes held by the tree.
   std::size_t memory_bytes() const {
     return tris_.capacity() * sizeof(Tri) + info_.capacity() * sizeof(Info) +
-           nodes_.capacity() * sizeof(Node);
+           nodes_.capacity() * sizeof(Node) + (parent_.capacity() + leaf_of_.capacity()) * sizeof(std::uint32_t);
   }
 
   /// The point of the indexed surface nearest to q. Precondition: !empty().
@@ -171,57 +171,30 @@ public:
   /// plus the step since, prunes the search). When nothing is within the
   /// bound: face = null_face(), squared_distance = infinity, point unset.
   Closest closest_point(const Eigen::Vector3d& q, double max_squared_distance) const {
-    // Member by member: `Closest r{}` would copy-list-initialize handles
-    // whose default constructor is explicit (OpenMesh's).
-    Closest r;
-    r.point = r.barycentric = Eigen::Vector3d::Zero();
-    r.squared_distance = std::numeric_limits<double>::infinity();
-    r.face = boost::graph_traits<G>::null_face();
-    r.triangle = 0;
-    std::uint32_t best = npos;
-    if (nodes_.empty()) return r;
-    double best_d = max_squared_distance;
-    Triangle_closest best_c{};
-    std::uint32_t stack[max_depth + 2];
-    int sp = 0;
-    std::uint32_t n = 0;
-    if (box_distance(nodes_[0], q) > best_d) return r;
-    for (;;) {
-      const Node& node = nodes_[n];
-      if (node.count) {
-        for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-          const Tri& t = tris_[i];
-          const Triangle_closest c = closest_point_on_triangle(q, t.p[0], t.p[1], t.p[2]);
-          const double d = (c.point - q).squaredNorm();
-          if (d < best_d) best_d = d, best_c = c, best = i;
-        }
-      } else {
-        std::uint32_t a = node.first, b = node.first + 1;
-        double da = box_distance(nodes_[a], q), db = box_distance(nodes_[b], q);
-        if (db < da) std::swap(a, b), std::swap(da, db);
-        if (da <= best_d) {
-          if (db <= best_d) stack[sp++] = b;
-          n = a;
-          continue;
-        }
-      }
-      // Pop the next subtree still within reach.
-      for (;;) {
-        if (sp == 0) goto done;
-        n = stack[--sp];
-        if (box_distance(nodes_[n], q) <= best_d) break;
-      }
+    Search s{max_squared_distance};
+    if (!nodes_.empty()) search_subtree(q, 0, s);
+    return answer(s);
+  }
+
+  /// As closest_point(q, max_squared_distance), but starting at the leaf of
+  /// triangle `start` (a leaf-order index, such as a previous answer's
+  /// Closest::triangle) and climbing to the root, searching on the way each
+  /// sibling subtree still within reach: when the answer lies near `start`,
+  /// the first triangles tested bound the search at once and the descents
+  /// from the root are skipped. The same squared distance as
+  /// closest_point(q, bound); among equally near triangles, which one is
+  /// returned depends on start. start out of range: closest_point(q, bound).
+  Closest closest_point_from(const Eigen::Vector3d& q, double max_squared_distance, std::size_t start) const {
+    if (start >= tris_.size()) return closest_point(q, max_squared_distance);
+    Search s{max_squared_distance};
+    std::uint32_t n = leaf_of_[start];
+    search_subtree(q, n, s);
+    while (n != 0) {
+      const std::uint32_t p = parent_[n];
+      search_subtree(q, nodes_[p].first == n ? n + 1 : n - 1, s);
+      n = p;
     }
-  done:
-    if (best != npos) {
-      r.point = best_c.point;
-      r.barycentric = best_c.barycentric;
-      r.squared_distance = best_d;
-      r.face = info_[best].face;
-      r.corners = info_[best].corners;
-      r.triangle = best;
-    }
-    return r;
+    return answer(s);
   }
 
   /// The squared distance from q to the indexed surface (infinity if empty).
@@ -395,6 +368,68 @@ public:
 
 private:
   static constexpr std::uint32_t npos = std::numeric_limits<std::uint32_t>::max();
+
+  // A closest-point search in progress: the best squared distance so far
+  // (starting at the caller's bound) and its triangle.
+  struct Search {
+    double best_d;
+    Triangle_closest best_c{};
+    std::uint32_t best = npos;
+  };
+
+  // Searches the subtree at `root` for triangles nearer than s.best_d,
+  // nearer child first.
+  void search_subtree(const Eigen::Vector3d& q, std::uint32_t root, Search& s) const {
+    if (box_distance(nodes_[root], q) > s.best_d) return;
+    std::uint32_t stack[max_depth + 2];
+    int sp = 0;
+    std::uint32_t n = root;
+    for (;;) {
+      const Node& node = nodes_[n];
+      if (node.count) {
+        for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+          const Tri& t = tris_[i];
+          const Triangle_closest c = closest_point_on_triangle(q, t.p[0], t.p[1], t.p[2]);
+          const double d = (c.point - q).squaredNorm();
+          if (d < s.best_d) s.best_d = d, s.best_c = c, s.best = i;
+        }
+      } else {
+        std::uint32_t a = node.first, b = node.first + 1;
+        double da = box_distance(nodes_[a], q), db = box_distance(nodes_[b], q);
+        if (db < da) std::swap(a, b), std::swap(da, db);
+        if (da <= s.best_d) {
+          if (db <= s.best_d) stack[sp++] = b;
+          n = a;
+          continue;
+        }
+      }
+      // Pop the next subtree still within reach.
+      for (;;) {
+        if (sp == 0) return;
+        n = stack[--sp];
+        if (box_distance(nodes_[n], q) <= s.best_d) break;
+      }
+    }
+  }
+
+  Closest answer(const Search& s) const {
+    // Member by member: `Closest r{}` would copy-list-initialize handles
+    // whose default constructor is explicit (OpenMesh's).
+    Closest r;
+    r.point = r.barycentric = Eigen::Vector3d::Zero();
+    r.squared_distance = std::numeric_limits<double>::infinity();
+    r.face = boost::graph_traits<G>::null_face();
+    r.triangle = 0;
+    if (s.best != npos) {
+      r.point = s.best_c.point;
+      r.barycentric = s.best_c.barycentric;
+      r.squared_distance = s.best_d;
+      r.face = info_[s.best].face;
+      r.corners = info_[s.best].corners;
+      r.triangle = s.best;
+    }
+    return r;
+  }
   // No tree is deeper: 63 Morton bits, then at most 32 median splits of
   // equal codes (bounds the traversal stacks).
   static constexpr std::uint32_t max_depth = 100;
@@ -424,8 +459,11 @@ private:
   static double box_distance(const Node& n, const Eigen::Vector3d& q) {
     double d = 0;
     for (int k = 0; k < 3; ++k) {
-      const double lo = n.lo[k], hi = n.hi[k];
-      const double e = q[k] < lo ? lo - q[k] : (q[k] > hi ? q[k] - hi : 0.0);
+      // Without branches (they mispredicted about half the time in the
+      // closest-point descents): max(x, 0) = (x + |x|) / 2, exactly; lo <= hi,
+      // so at most one of the two gaps is positive.
+      const double below = static_cast<double>(n.lo[k]) - q[k], above = q[k] - static_cast<double>(n.hi[k]);
+      const double e = 0.5 * ((below + std::abs(below)) + (above + std::abs(above)));
       d += e * e;
     }
     return d;
@@ -606,6 +644,9 @@ private:
       detail::large_vector<Build_prim>().swap(sorted);
       nodes_.reserve(n);
       nodes_.push_back({});
+      parent_.reserve(n);
+      parent_.push_back(0);
+      leaf_of_.resize(n);
       struct Range {
         std::uint32_t node, begin, end;
       };
@@ -618,6 +659,7 @@ private:
         if (cnt <= leaf_max) {
           nodes_[r.node].first = r.begin;
           nodes_[r.node].count = cnt;
+          for (std::uint32_t i = r.begin; i < r.end; ++i) leaf_of_[i] = r.node;
           continue;
         }
         const std::uint64_t first = keys[r.begin].code, last = keys[r.end - 1].code;
@@ -639,6 +681,8 @@ private:
         nodes_[r.node].count = 0;
         nodes_.push_back({});
         nodes_.push_back({});
+        parent_.resize(nodes_.size());
+        parent_[left] = parent_[left + 1] = r.node;
         todo.push_back({left + 1, mid, r.end});
         todo.push_back({left, r.begin, mid});
       }
@@ -654,6 +698,7 @@ private:
       }
     }
     nodes_.shrink_to_fit();
+    parent_.shrink_to_fit();
     // Pass 2, in leaf order: the triangles' faces and corners, and their
     // points read again from the mesh (independent reads, unlike a
     // permutation in place, which chains them).
@@ -673,6 +718,8 @@ private:
   detail::large_vector<Tri> tris_;
   detail::large_vector<Info> info_;
   detail::large_vector<Node> nodes_;
+  std::vector<std::uint32_t> parent_;  // each node's parent (the root's: 0)
+  std::vector<std::uint32_t> leaf_of_; // each triangle's leaf
   Eigen::AlignedBox3d box_;
   std::size_t skipped_ = 0;
 };

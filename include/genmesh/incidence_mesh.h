@@ -34,6 +34,9 @@
 //   create and remove elements in the same order, with the same edge
 //   directions and returned descriptors, as on Halfedge_mesh: the same
 //   operation sequence gives the same to_soup() and the same edge numbering.
+// - In-place subdivision appends a whole level in one call
+//   (genmesh_native_relink → relink(): every row written in one pass, the
+//   elements numbered as the local operations would number them).
 // - Local edits cost O(local degree) amortized: rows live in Eigen's
 //   uncompressed storage with per-row slack; a row that outgrows its slot
 //   moves to the end of the buffer with twice the room, and the buffer is
@@ -1227,6 +1230,33 @@ public:
     fprops_.resize(nf);
   }
 
+  /// The bulk append of in-place subdivision (genmesh_native_relink): the
+  /// mesh becomes nv vertices (the old ones, then new ones at the default
+  /// point), edges e = 0, 1, … from ends[2e] to ends[2e+1] and faces
+  /// f = 0, 1, … with the sides sides[offsets[f] .. offsets[f+1]) in cycle
+  /// order (2e: along edge e, 2e+1: against it). The old elements keep their
+  /// indices and property values, the new ones get the next indices and
+  /// default values, exactly as the same elements appended one by one on a
+  /// mesh without removed elements; all four matrices are written in one pass
+  /// (assign_incidences) instead of row edits per element. Preconditions (not
+  /// checked): no removed elements; at least as many vertices, edges and faces
+  /// as before; a valid manifold result with distinct corners per face.
+  void relink(std::size_t nv, const std::vector<std::uint32_t>& ends, const std::vector<std::uint32_t>& offsets,
+              const std::vector<std::uint32_t>& sides) {
+    std::vector<P> pts = std::move(points_);
+    pts.resize(nv, detail::default_point<P>());
+    std::vector<std::uint32_t> corner_edge(sides.size());
+    std::vector<signed char> corner_sign(sides.size());
+    for (std::size_t c = 0; c < sides.size(); ++c) {
+      corner_edge[c] = sides[c] >> 1;
+      corner_sign[c] = (sides[c] & 1u) ? -1 : 1;
+    }
+    const bool recycle = recycle_, manifold = manifold_;
+    assign_incidences(pts, ends, offsets, corner_edge, corner_sign);
+    recycle_ = recycle;
+    if (!manifold) update_manifold_flags_(); // a fresh mesh assumes a manifold one
+  }
+
 private:
   static void transpose_into_(const std::vector<std::uint32_t>& begin, const std::vector<int>& cols,
                               const std::vector<signed char>& vals, std::size_t rows, std::size_t ncols,
@@ -1639,6 +1669,16 @@ std::size_t genmesh_native_link_soup(const Polygon_soup& s, const std::vector<st
   g.assign_incidences(s.points, ends, s.offsets, ce, sign);
   if (corner_edge) *corner_edge = std::move(ce);
   return border;
+}
+
+/// The bulk append of in-place subdivision on Incidence_mesh (found by ADL:
+/// detail::subdivision::Has_native_relink; see Incidence_mesh::relink and
+/// docs/concepts.md). A backend without set_next cannot be linked by the
+/// generic bulk path, so it takes the level's result in incidence form.
+template <class P>
+void genmesh_native_relink(Incidence_mesh<P>& g, std::size_t nv, const std::vector<std::uint32_t>& ends,
+                           const std::vector<std::uint32_t>& offsets, const std::vector<std::uint32_t>& sides) {
+  g.relink(nv, ends, offsets, sides);
 }
 
 // The claims of this header, checked where it is compiled.

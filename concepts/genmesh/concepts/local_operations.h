@@ -55,7 +55,10 @@
 // optional speed-up with a generic fallback
 // (<genmesh/subdivision/detail/in_place.h>; native on Halfedge_mesh and
 // CGAL::Surface_mesh). A backend without set_next refines through the
-// native operations above.
+// native operations above, or, when it provides genmesh_native_relink(g,
+// nv, ends, offsets, sides) (the same bulk append in incidence form: every
+// edge's ends and every face's side cycle; native on Incidence_mesh), takes a
+// whole level in that one call; also optional, outside this table.
 #pragma once
 
 #include <genmesh/concepts/descriptor.h>

@@ -6,7 +6,9 @@
 //
 // Queries are bounded: the caller passes a point known to lie on the
 // surface (the vertex's previous projection), so the search is pruned to the
-// ball through it; the closest point is the global one either way.
+// ball through it, and the triangle it lies in, where the search starts
+// (Aabb_tree::closest_point_from: that triangle's leaf first, then up the
+// tree); the closest point is the global one either way.
 // Deterministic: every backend numbers faces and vertices alike, so the tree
 // (built in face order, fans from the lowest-index corner) and its answers
 // are the same on every backend.
@@ -89,21 +91,18 @@ public:
   /// The point of the surface nearest to q, given a point `on` of the
   /// surface (it bounds the search: the nearest point is no farther) and
   /// `triangle`, the (leaf-order) triangle of the previous answer or npos,
-  /// which bounds it tighter: a vertex moved tangentially is usually still
-  /// nearest to the triangle it was on. `triangle` is updated; with attached
+  /// where the search starts: a vertex moved tangentially is usually still
+  /// nearest to the triangle it was on, or to one beside it. `triangle` is updated; with attached
   /// values, `value` is set to theirs interpolated at the returned point.
   Eigen::Vector3d project(const Eigen::Vector3d& q, const Eigen::Vector3d& on, std::size_t& triangle,
                           double* value = nullptr) const {
     if (tree_->empty() || !q.allFinite()) return q;
-    double d2 = (q - on).squaredNorm();
-    if (triangle < tree_->triangle_count()) {
-      const auto& t = tree_->triangle_points(triangle);
-      d2 = std::min(d2, (closest_point_on_triangle(q, t[0], t[1], t[2]).point - q).squaredNorm());
-    }
+    const double d2 = (q - on).squaredNorm();
     if (std::isfinite(d2)) {
       // A little slack: `on` is a computed point of a triangle, not exactly on it.
       const double r = std::sqrt(d2) * (1 + 1e-9) + slack_;
-      const auto c = tree_->closest_point(q, r * r);
+      // From the previous triangle's leaf up: it is tested first and bounds the rest.
+      const auto c = tree_->closest_point_from(q, r * r, triangle);
       // Nothing that near: face is null_face().
       if (c.face != boost::graph_traits<G>::null_face()) return answer(q, c, triangle, value);
     }

@@ -22,7 +22,7 @@
 // most 50 passes; bad triangles: 2 passes; a pass after the first looks only
 // at the edges near the previous pass's flips (the others would decide as
 // before). Smoothing: fixed steps. Projection: one Aabb_tree query per
-// vertex, bounded by the distance to the triangle it was last projected to.
+// vertex, started at the triangle it was last projected to.
 #pragma once
 
 #include <genmesh/concepts.h>
@@ -282,21 +282,26 @@ public:
     return n;
   }
 
-  /// Flips free inner edges of triangles with an angle below 30° where the
+  /// Flips free inner edges of triangles with an angle below 36° where the
   /// flip raises the smaller of the two triangles' smallest angles and keeps
   /// orientation (caps and slivers that the valence flips and smoothing left;
   /// pmp-library's remove_caps, widened). Two passes.
   std::size_t remove_bad_triangles() {
-    const double bad = std::cos(30.0 * std::numbers::pi / 180.0); // cos of the smallest angle we keep
+    // 36°, the quality aimed at (issue 13): on armadillo after two Loop
+    // levels (832k faces) a threshold of 30° left 39 triangles below 36°,
+    // 36° leaves 20, at no measurable cost, valence 6 share unchanged
+    // (±0.1 %); which triangle is the worst stays chaotic
+    // (docs/benchmarks.md, session 4).
+    const double bad = std::cos(36.0 * std::numbers::pi / 180.0); // cos of the smallest angle we keep
     // The first pass looks only at the edges of triangles with an angle
-    // below 30° (found without roots), the second at what the first changed.
+    // below 36° (found without roots), the second at what the first changed.
     const std::size_t n = flip_passes(
         2,
         [&](std::vector<int>& mark) {
           for (auto f : faces(g_)) {
             // From the canonical corner: the test's rounding must not depend on the backend.
             const H h0 = detail::geom::canonical_halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
-            if (has_angle_below_30(pt(target(h0, g_)), pt(target(h1, g_)), pt(target(h2, g_))))
+            if (has_angle_below(pt(target(h0, g_)), pt(target(h1, g_)), pt(target(h2, g_)), bad * bad))
               for (const H x : {h0, h1, h2}) mark[eid(x)] = 0;
           }
         },
@@ -309,12 +314,12 @@ public:
     return n;
   }
 
-  /// Whether triangle (a, b, c) has an angle below 30°: cos² > 3/4 at an
-  /// acute corner, compared without roots.
-  static bool has_angle_below_30(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  /// Whether triangle (a, b, c) has an angle below the one whose squared
+  /// cosine is cos2: cos² > cos2 at an acute corner, compared without roots.
+  static bool has_angle_below(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, double cos2) {
     const Eigen::Vector3d ab = b - a, bc = c - b, ca = a - c;
     const double lab = ab.squaredNorm(), lbc = bc.squaredNorm(), lca = ca.squaredNorm();
-    auto small = [](double d, double l1, double l2) { return d > 0 && d * d > 0.75 * l1 * l2; };
+    auto small = [cos2](double d, double l1, double l2) { return d > 0 && d * d > cos2 * l1 * l2; };
     return small(-ab.dot(ca), lab, lca) || small(-ab.dot(bc), lab, lbc) || small(-bc.dot(ca), lbc, lca);
   }
 
@@ -424,6 +429,7 @@ public:
     std::vector<std::uint32_t> free_id, offset{0}, ring;
     const std::size_t vb = index_bound(vertex_index, g_);
     std::vector<Eigen::Vector3d> pos(vb, Eigen::Vector3d::Zero());
+    free.reserve(vb), free_id.reserve(vb), offset.reserve(vb + 1), ring.reserve(7 * vb);
     for (auto v : vertices(g_)) {
       pos[vid(v)] = pt(v);
       if ((vflag_at(v) & (v_constrained | v_fixed)) || halfedge(v, g_) == null_h()) continue;
@@ -441,30 +447,35 @@ public:
         const Eigen::Vector3d p = pos[free_id[i]];
         const std::uint32_t b = offset[i], k = offset[i + 1] - b;
         const std::uint32_t* r = ring.data() + b;
-        // Inner vertex: the ring is closed, face j is (r[j], v, r[j + 1]).
+        // Inner vertex: the ring is closed, face j is (a, v, c) with
+        // a = r[j], c = r[j + 1]; its normal (c − p) × (a − p) = d × (a − p),
+        // d = c − a. The normal (their sum) is the tangent plane's.
         Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-        for (std::uint32_t j = 0; j < k; ++j)
-          normal += triangle_normal(p, pos[r[j + 1 == k ? 0 : j + 1]], pos[r[j]]);
         Eigen::Vector3d u = Eigen::Vector3d::Zero();
         bool solved = false;
         if (squared_areas) {
           // The point minimizing the sum of the squared areas of v's
           // triangles (pmp-library's rule): A x = rhs with
-          // A = Σ w (|d|² I − d dᵀ), rhs = Σ w (|d|² a − d (d·a)), d = c − a,
-          // w = 1/|d|; A symmetric, solved by its adjugate.
+          // A = Σ w (|d|² I − d dᵀ), rhs = Σ w (|d|² a − d (d·a)),
+          // w = 1/|d|; A symmetric, solved by its adjugate. One pass over
+          // the ring for the normal and the system, each neighbour read once.
           double s = 0, m00 = 0, m01 = 0, m02 = 0, m11 = 0, m12 = 0, m22 = 0;
           Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+          Eigen::Vector3d a = pos[r[0]];
           for (std::uint32_t j = 0; j < k; ++j) {
-            const Eigen::Vector3d& a = pos[r[j]];
-            const Eigen::Vector3d d = pos[r[j + 1 == k ? 0 : j + 1]] - a;
+            const Eigen::Vector3d c = pos[r[j + 1 == k ? 0 : j + 1]];
+            const Eigen::Vector3d d = c - a;
+            normal += d.cross(a - p);
             const double l2 = d.squaredNorm();
-            if (!(l2 > 0)) continue;
-            const double l = std::sqrt(l2), w = 1.0 / l;
-            s += l;
-            const Eigen::Vector3d wd = w * d;
-            m00 += wd.x() * d.x(), m01 += wd.x() * d.y(), m02 += wd.x() * d.z();
-            m11 += wd.y() * d.y(), m12 += wd.y() * d.z(), m22 += wd.z() * d.z();
-            rhs += l * a - wd * d.dot(a);
+            if (l2 > 0) {
+              const double l = std::sqrt(l2), w = 1.0 / l;
+              s += l;
+              const Eigen::Vector3d wd = w * d;
+              m00 += wd.x() * d.x(), m01 += wd.x() * d.y(), m02 += wd.x() * d.z();
+              m11 += wd.y() * d.y(), m12 += wd.y() * d.z(), m22 += wd.z() * d.z();
+              rhs += l * a - wd * d.dot(a);
+            }
+            a = c;
           }
           const double a00 = s - m00, a11 = s - m11, a22 = s - m22, a01 = -m01, a02 = -m02, a12 = -m12;
           const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
@@ -478,6 +489,9 @@ public:
             u = x / det - p;
             solved = true;
           }
+        } else {
+          for (std::uint32_t j = 0; j < k; ++j)
+            normal += triangle_normal(p, pos[r[j + 1 == k ? 0 : j + 1]], pos[r[j]]);
         }
         if (!solved) {
           // Uniform: the mean of the neighbours; area-weighted fallback
@@ -516,6 +530,9 @@ public:
   void project() {
     if (!ref_) return;
     grow();
+    // In vertex order: sorting the queries by their last triangle (the
+    // tree's Morton order) made the descents share cached paths but the
+    // vertex reads random, and the sort cost more than it saved.
     for (auto v : vertices(g_)) {
       if (vflag_at(v) & v_fixed) continue;
       Eigen::Vector3d& on = on_at(v);

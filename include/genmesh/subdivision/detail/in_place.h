@@ -786,6 +786,145 @@ struct Local_refiner {
   }
 };
 
+/// A backend that takes a level's result in incidence form in one call
+/// (Incidence_mesh: it has no set_next for the bulk path's linking).
+template <class G>
+concept Has_native_relink = requires(G& g, std::size_t n, const std::vector<std::uint32_t>& a) {
+  genmesh_native_relink(g, n, a, a, a);
+};
+
+/// The bulk path of a backend with genmesh_native_relink (and no removed
+/// elements): the same elements in the same order as the bulk path and the
+/// local operations give — vertices nv + i for the edge points, then the
+/// face points; old edge k keeps the half at its halfedge's source, the
+/// other half is edge ne + number[k]; then the inner edges face by face; old
+/// face j keeps the middle triangle (1-to-4) or its last quad, the others
+/// are appended face by face — computed from the old mesh, then handed to
+/// the backend as edge ends and face side cycles (halfedge 2e + side), and
+/// the new points written through pts. The per-operation visitor hooks are
+/// not called (as on the bulk path).
+template <class Pm>
+struct Relink_refiner {
+  Pm pts;
+
+  template <class G>
+  Buffered_points new_points(G&, std::size_t n) const {
+    return {std::vector<Eigen::Vector3d>(n, Eigen::Vector3d::Zero())};
+  }
+
+  /// Old halfedge x of a split edge: (first, second) as sides, from the old
+  /// source to m and from m to the old target, and m. x runs along its edge
+  /// k when it leaves the edge's source (ends[2k], from split_ends; not
+  /// x == halfedge(edge(x)), which some descriptors make true for both).
+  struct Halves_of {
+    std::uint32_t first, second, m;
+  };
+  template <class G>
+  static Halves_of halves(const G& g, halfedge_descriptor_t<G> x, std::size_t nv, std::size_t ne,
+                          const std::vector<std::uint32_t>& number, const std::vector<std::uint32_t>& ends) {
+    const auto k = static_cast<std::uint32_t>(get(get(edge_index, g), edge(x, g)));
+    const std::uint32_t i = number[k], half = static_cast<std::uint32_t>(ne) + i;
+    const auto m = static_cast<std::uint32_t>(nv + i);
+    if (static_cast<std::uint32_t>(get(get(vertex_index, g), source(x, g))) == ends[2 * k])
+      return {2 * k, 2 * half, m};
+    return {2 * half + 1, 2 * k + 1, m};
+  }
+
+  /// Edge ends after the split of the ne old edges, with room for `inner`
+  /// more edges.
+  template <class G>
+  static std::vector<std::uint32_t> split_ends(const G& g, std::size_t nv, std::size_t ne, std::size_t inner,
+                                               const std::vector<std::uint32_t>& number) {
+    auto vi = get(vertex_index, g);
+    auto ei = get(edge_index, g);
+    std::vector<std::uint32_t> ends(2 * (2 * ne + inner));
+    for (auto e : edges(g)) {
+      const auto k = static_cast<std::size_t>(get(ei, e));
+      if (k >= ne) break;
+      const auto h = halfedge(e, g);
+      const std::size_t i = number[k], m = nv + i;
+      ends[2 * k] = static_cast<std::uint32_t>(get(vi, source(h, g)));
+      ends[2 * k + 1] = static_cast<std::uint32_t>(m);
+      ends[2 * (ne + i)] = static_cast<std::uint32_t>(m);
+      ends[2 * (ne + i) + 1] = static_cast<std::uint32_t>(get(vi, target(h, g)));
+    }
+    return ends;
+  }
+
+  template <class G>
+  void finish(G& g, const Buffered_points& points, std::size_t nv, const std::vector<std::uint32_t>& ends,
+              const std::vector<std::uint32_t>& offsets, const std::vector<std::uint32_t>& sides) const {
+    genmesh_native_relink(g, nv + points.p.size(), ends, offsets, sides);
+    std::size_t i = 0;
+    for (auto v : vertices(g)) // no removed elements: iteration is by index
+      if (i++ >= nv) put(pts, v, from_eigen<map_point_t<Pm>>(points.p[i - 1 - nv]));
+  }
+
+  template <class G>
+  std::vector<std::uint32_t> one_to_four(G& g, const Buffered_points& points, std::size_t nv, std::size_t ne,
+                                         std::size_t nf, const std::vector<std::uint32_t>& number) const {
+    auto vi = get(vertex_index, g);
+    auto vnum = [&](auto v) { return static_cast<std::uint32_t>(get(vi, v)); };
+    std::vector<std::uint32_t> ends = split_ends(g, nv, ne, 3 * nf, number);
+    std::vector<std::uint32_t> offsets(4 * nf + 1), sides(12 * nf);
+    for (std::size_t f = 0; f <= 4 * nf; ++f) offsets[f] = static_cast<std::uint32_t>(3 * f);
+    std::size_t j = 0;
+    for (auto f : faces(g)) {
+      if (j == nf) break;
+      const auto x0 = halfedge(f, g), x1 = next(x0, g), x2 = next(x1, g);
+      Halves_of x[3] = {halves(g, x0, nv, ne, number, ends), halves(g, x1, nv, ne, number, ends),
+                        halves(g, x2, nv, ne, number, ends)};
+      rotate_to_lowest(x, vnum(target(x0, g)), vnum(target(x1, g)), vnum(target(x2, g)));
+      for (std::size_t t = 0; t < 3; ++t) {
+        const std::size_t inner = 2 * ne + 3 * j + t, u = (t + 1) % 3;
+        ends[2 * inner] = x[u].m; // side 0 ends at m_t, side 1 at m_t+1
+        ends[2 * inner + 1] = x[t].m;
+        sides[3 * j + t] = static_cast<std::uint32_t>(2 * inner + 1); // the middle triangle stays face j
+        std::uint32_t* corner = &sides[3 * (nf + 3 * j + t)];
+        corner[0] = x[t].second, corner[1] = x[u].first, corner[2] = static_cast<std::uint32_t>(2 * inner);
+      }
+      ++j;
+    }
+    finish(g, points, nv, ends, offsets, sides);
+    return {};
+  }
+
+  template <class G>
+  std::vector<std::uint32_t> quads(G& g, const Buffered_points& points, std::size_t nv, std::size_t ne, std::size_t nf,
+                                   std::size_t nc, const std::vector<std::uint32_t>& number) const {
+    auto vi = get(vertex_index, g);
+    std::vector<std::uint32_t> ends = split_ends(g, nv, ne, nc, number);
+    std::vector<std::uint32_t> offsets(nc + 1), sides(4 * nc);
+    for (std::size_t f = 0; f <= nc; ++f) offsets[f] = static_cast<std::uint32_t>(4 * f);
+    std::vector<halfedge_descriptor_t<G>> hs;
+    std::vector<Halves_of> xs;
+    std::size_t j = 0, inner = 2 * ne, new_faces = nf;
+    for (auto f : faces(g)) {
+      if (j == nf) break;
+      const auto c = static_cast<std::uint32_t>(nv + ne + j);
+      canonical_cycle(g, f, hs, [&](auto x) { return static_cast<std::uint32_t>(get(vi, target(x, g))); });
+      xs.clear();
+      for (const auto x : hs) xs.push_back(halves(g, x, nv, ne, number, ends));
+      const std::size_t n = xs.size();
+      for (std::size_t t = 0; t < n; ++t) { // inner edge t: m_t → c
+        ends[2 * (inner + t)] = xs[t].m;
+        ends[2 * (inner + t) + 1] = c;
+      }
+      for (std::size_t t = 0; t < n; ++t) { // quad t: second_t, first_t+1, m_t+1 → c, c → m_t
+        const std::size_t u = (t + 1) % n, ft = t + 1 == n ? j : new_faces + t;
+        std::uint32_t* corner = &sides[4 * ft];
+        corner[0] = xs[t].second, corner[1] = xs[u].first;
+        corner[2] = static_cast<std::uint32_t>(2 * (inner + u)), corner[3] = static_cast<std::uint32_t>(2 * (inner + t) + 1);
+      }
+      inner += n;
+      new_faces += n - 1;
+      ++j;
+    }
+    finish(g, points, nv, ends, offsets, sides);
+    return {};
+  }
+};
+
 /// Counts {V, E, F, corners} of g; throws, naming the face, when a face
 /// cycle does not close or (face_size ≠ 0) a face has another size.
 template <class G>
@@ -915,6 +1054,12 @@ Subdivision_result run_in_place(G& g, int iterations, const char* scheme, const 
               static_cast<typename boost::graph_traits<G>::edges_size_type>(last[1]),
               static_cast<typename boost::graph_traits<G>::faces_size_type>(last[2]));
       run(Bulk_refiner<decltype(point_map_of(g, point_map))>{point_map_of(g, point_map)});
+    }
+  }
+  if constexpr (!In_place_refinable<G> && Has_native_relink<G>) {
+    if (is_dense(g)) {
+      bulk = true;
+      run(Relink_refiner<decltype(point_map_of(g, point_map))>{point_map_of(g, point_map)});
     }
   }
   if (!bulk) run(Local_refiner<V, decltype(point_map_of(g, point_map))>{&vis, point_map_of(g, point_map)});
