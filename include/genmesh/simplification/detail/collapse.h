@@ -717,17 +717,26 @@ class Collapser {
       all.lo = all.lo.cwiseMin(fresh_box_[i].lo);
       all.hi = all.hi.cwiseMax(fresh_box_[i].hi);
     }
-    bool hit = false;
+    // Two passes: the slots pick the candidates (asking for their corners'
+    // points as they go), then the tests read the points, whose cache misses
+    // have overlapped by then.
+    candidates_.clear();
     grid_.query(all, [&](Face_grid::Cell at, const Face_grid::Range& range, std::span<const std::uint32_t> cell) {
       // Nearly every slot read is a cache miss: ask for it a few faces ahead.
       constexpr std::size_t ahead = 8;
       for (std::size_t k = 0; k < std::min(ahead, cell.size()); ++k) prefetch(&slot_[cell[k]]);
-      for (std::size_t k = 0; k < cell.size() && !hit; ++k) {
+      for (std::size_t k = 0; k < cell.size(); ++k) {
         if (k + ahead < cell.size()) prefetch(&slot_[cell[k + ahead]]);
-        test_candidate(cell[k], ip, iq, at, range, all, hit);
+        pick_candidate(cell[k], ip, iq, at, range, all);
       }
     });
-    if (hit) return false;
+    for (const auto& [f, mask] : candidates_) {
+      const Mesh_triangle<std::uint32_t> u = slot_triangle(f);
+      for (std::size_t i = 0; i < fresh_.size(); ++i)
+        if ((i >= 64 || (mask >> i) & 1u) && slot_[f].overlaps(fresh_box_[i]) && !separated(i, u) &&
+            exact_test(fresh_[i], u))
+          return false;
+    }
     return true;
   }
 
@@ -737,29 +746,24 @@ class Collapser {
 #endif
   }
 
-  // The exact test of candidate face f, met in cell `at` of a query of
-  // cells `range`, against the new faces (a no-op for a dead face, one
-  // around p or q, or one the query meets in an earlier cell).
-  void test_candidate(std::uint32_t f, std::uint32_t ip, std::uint32_t iq, Face_grid::Cell at,
-                      const Face_grid::Range& range, const Box& all, bool& hit) {
-    {
-      const Face_slot& sl = slot_[f];
-      if (!sl.alive()) return;
-      for (const std::uint32_t v : sl.v)
-        if (v == ip || v == iq) return;
-      if (!sl.overlaps(all)) return;
-      if (!Face_grid::first_shared(grid_.range_of(sl.box()), range, at)) return;
-      bool built = false;
-      Mesh_triangle<std::uint32_t> u;
-      for (std::size_t i = 0; i < fresh_.size() && !hit; ++i) {
-        if (!sl.overlaps(fresh_box_[i])) continue;
-        if (!built) {
-          u = slot_triangle(f);
-          built = true;
-        }
-        if (!separated(i, u) && exact_test(fresh_[i], u)) hit = true;
-      }
-    }
+  // Lists candidate face f, met in cell `at` of a query of cells `range`,
+  // with the new faces whose boxes its box meets (bit i: new face i; new
+  // faces from the 64th on are always tested), unless it is dead, around p
+  // or q, meets none, or is met in an earlier cell of the query.
+  void pick_candidate(std::uint32_t f, std::uint32_t ip, std::uint32_t iq, Face_grid::Cell at,
+                      const Face_grid::Range& range, const Box& all) {
+    const Face_slot& sl = slot_[f];
+    if (!sl.alive()) return;
+    for (const std::uint32_t v : sl.v)
+      if (v == ip || v == iq) return;
+    if (!sl.overlaps(all)) return;
+    if (!Face_grid::first_shared(grid_.range_of(sl.box()), range, at)) return;
+    std::uint64_t mask = 0;
+    for (std::size_t i = 0; i < std::min<std::size_t>(fresh_.size(), 64); ++i)
+      if (sl.overlaps(fresh_box_[i])) mask |= std::uint64_t{1} << i;
+    if (mask == 0 && fresh_.size() <= 64) return;
+    for (const std::uint32_t v : sl.v) prefetch(&pos_[v]);
+    candidates_.push_back({f, mask});
   }
 
   // faces_intersect, counted.
@@ -1139,6 +1143,7 @@ class Collapser {
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
   std::vector<H> around_;           // the survivor's incoming halfedges
   std::vector<Box> fresh_box_;
+  std::vector<std::pair<std::uint32_t, std::uint64_t>> candidates_; // slot, new faces its box meets
   std::vector<Fresh_plane> fresh_plane_;
   std::size_t exact_tests_ = 0; // faces_intersect calls (the filters decided the rest)
   Face_grid grid_;
