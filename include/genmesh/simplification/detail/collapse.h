@@ -723,14 +723,20 @@ class Collapser {
     // points as they go), then the tests read the points, whose cache misses
     // have overlapped by then.
     candidates_.clear();
-    grid_.query(all, [&](Face_grid::Cell at, const Face_grid::Range& range, std::span<const std::uint32_t> cell) {
+    grid_.query(all, [&](Face_grid::Cell at, const Face_grid::Range& range, std::vector<std::uint32_t>& cell) {
       // Nearly every slot read is a cache miss: ask for it a few faces ahead.
+      // Entries of dead faces, and of faces that have left the cell, are
+      // dropped on the way (they were half of the entries read).
       constexpr std::size_t ahead = 8;
-      for (std::size_t k = 0; k < std::min(ahead, cell.size()); ++k) prefetch(&slot_[cell[k]]);
-      for (std::size_t k = 0; k < cell.size(); ++k) {
-        if (k + ahead < cell.size()) prefetch(&slot_[cell[k + ahead]]);
-        pick_candidate(cell[k], ip, iq, at, range, all);
+      const std::size_t n = cell.size();
+      for (std::size_t k = 0; k < std::min(ahead, n); ++k) prefetch(&slot_[cell[k]]);
+      std::size_t kept = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        if (k + ahead < n) prefetch(&slot_[cell[k + ahead]]);
+        const std::uint32_t f = cell[k];
+        if (pick_candidate(f, ip, iq, at, range, all)) cell[kept++] = f;
       }
+      cell.resize(kept);
     });
     for (const auto& [f, mask] : candidates_) {
       const Mesh_triangle<std::uint32_t> u = slot_triangle(f);
@@ -751,21 +757,23 @@ class Collapser {
   // Lists candidate face f, met in cell `at` of a query of cells `range`,
   // with the new faces whose boxes its box meets (bit i: new face i; new
   // faces from the 64th on are always tested), unless it is dead, around p
-  // or q, meets none, or is met in an earlier cell of the query.
-  void pick_candidate(std::uint32_t f, std::uint32_t ip, std::uint32_t iq, Face_grid::Cell at,
+  // or q, meets none, or is met in an earlier cell of the query. False
+  // when the cell's entry is stale: f is dead or its box has left the cell.
+  bool pick_candidate(std::uint32_t f, std::uint32_t ip, std::uint32_t iq, Face_grid::Cell at,
                       const Face_grid::Range& range, const Box& all) {
     const Face_slot& sl = slot_[f];
-    if (!sl.alive()) return;
+    if (!sl.alive()) return false;
+    if (!sl.overlaps(all)) return Face_grid::covers(grid_.range_of(sl.box()), at);
     for (const std::uint32_t v : sl.v)
-      if (v == ip || v == iq) return;
-    if (!sl.overlaps(all)) return;
-    if (!Face_grid::first_shared(grid_.range_of(sl.box()), range, at)) return;
+      if (v == ip || v == iq) return true;
+    if (!Face_grid::first_shared(grid_.range_of(sl.box()), range, at)) return true;
     std::uint64_t mask = 0;
     for (std::size_t i = 0; i < std::min<std::size_t>(fresh_.size(), 64); ++i)
       if (sl.overlaps(fresh_box_[i])) mask |= std::uint64_t{1} << i;
-    if (mask == 0 && fresh_.size() <= 64) return;
+    if (mask == 0 && fresh_.size() <= 64) return true;
     for (const std::uint32_t v : sl.v) prefetch(&pos_[v]);
     candidates_.push_back({f, mask});
+    return true;
   }
 
   // faces_intersect, counted.

@@ -81,19 +81,22 @@ class Face_grid {
   static bool first_shared(const Range& a, const Range& b, Cell c) {
     return c.x == std::max(a.x0, b.x0) && c.y == std::max(a.y0, b.y0) && c.z == std::max(a.z0, b.z0);
   }
+  static bool covers(const Range& a, Cell c) { return a.contains(c.x, c.y, c.z); }
 
   // Calls visit(cell, range, faces) for every non-empty cell b overlaps,
-  // with b's range and the span of the faces listed there (a face may come
+  // with b's range and the list of the faces listed there (a face may come
   // in several cells, and may no longer overlap b): the caller walks it,
-  // prefetching ahead.
+  // prefetching ahead, and may drop the entries of faces that are gone or
+  // whose box no longer reaches the cell (never others: a face must stay
+  // listed in every cell its box's range covers).
   template <class Visit>
-  void query(const Box& b, Visit&& visit) const {
+  void query(const Box& b, Visit&& visit) {
     const Range r = range_of(b);
     for_range(r, [&](std::int64_t x, std::int64_t y, std::int64_t z) {
       const auto it = cells_.find(key(x, y, z));
       if (it == cells_.end()) return;
       visit(Cell{static_cast<std::uint16_t>(x), static_cast<std::uint16_t>(y), static_cast<std::uint16_t>(z)}, r,
-            std::span<const std::uint32_t>(it->second));
+            it->second);
     });
   }
 
