@@ -8,30 +8,42 @@
 // weight; a triangle contributes the squared distance to its plane in that
 // space (the 2-plane through its three lifted corners). A collapse goes to
 // the point of R^(3+k) minimizing the summed quadric: a position and the
-// attribute values of the survivor, which simplify() hands back through
-// .write. So an edge across a colour or UV seam costs what the seam would
+// attribute values of the survivor, which simplify() writes back into the
+// attributes' property maps. So an edge across a colour or UV seam costs what the seam would
 // lose, and the survivor gets the values that fit its neighbourhood best.
 // (Hoppe's 1999 metric is a variant of this one with a smaller matrix; the
 // minimizer is the same for k ≤ 3 up to the weighting of the geometric term.)
 //
-//   std::vector<double> rgb(3 * n);  // by vertex index
-//   genmesh::Attribute_quadrics a{.dimension = 3,
-//       .read = [&](std::size_t v, double* out) { std::copy_n(&rgb[3 * v], 3, out); },
-//       .write = [&](std::size_t v, const double* in) { std::copy_n(in, 3, &rgb[3 * v]); },
-//       .weights = {0.1, 0.1, 0.1}};
-//   genmesh::simplify(mesh, genmesh::Simplification_options<genmesh::Attribute_quadrics>{
-//       .target_ratio = 0.1, .policy = a});
+// The attributes are vertex property maps, each with a weight (any number of
+// them, of any value type genmesh::Attribute_traits knows: a number, an
+// Eigen vector, std::array, std::vector, a point type):
 //
-// The cost is the squared distance in R^(3+k): geometric distance squared
-// plus (weight × attribute deviation) squared, so a weight says how many
-// model units one unit of the attribute is worth. With dimension 0 this is
-// Plane_quadrics without its fallback to the segment's minimizer. Deterministic across backends as
-// the other policies (corners in canonical order, sums in face order).
+//   auto colour = genmesh::scratch_property<Eigen::Vector3d>(genmesh::vertex_index, mesh);  // or the user's map
+//   auto uv = ...;                                                         // a map of std::array<double, 2>
+//   genmesh::simplify(mesh, genmesh::Simplification_options<genmesh::Attribute_quadrics<Mesh>>{
+//       .target_ratio = 0.1,
+//       .policy = {.attributes = {genmesh::vertex_attribute(colour, 0.1), genmesh::vertex_attribute(uv, 1.0)}}});
+//
+// Before the first collapse every vertex's values are read; after each
+// collapse the survivor's optimal values are written back into each writable
+// map (the removed vertex's entries are left as they were). The cost is the
+// squared distance in R^(3+k): geometric distance squared plus (weight ×
+// attribute deviation) squared, so a weight says how many model units one
+// unit of the attribute is worth. With no attributes this is Plane_quadrics
+// without its fallback to the segment's minimizer. Deterministic across
+// backends as the other policies (values read by vertex index, corners in
+// canonical order, sums in face order): the same maps' contents give the
+// same mesh and the same values on every backend.
 #pragma once
 
+#include <genmesh/attribute_traits.h>
+#include <genmesh/concepts.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/geometry.h>
+#include <genmesh/property_maps.h>
 #include <genmesh/simplification/quadric.h>
+
+#include <boost/property_map/property_map.hpp>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -40,6 +52,9 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace genmesh {
@@ -90,19 +105,74 @@ struct Generalized_quadric {
   }
 };
 
-/// Garland–Heckbert 1998 quadrics over position and `dimension` attribute
-/// values per vertex (see the top of this header). .read gives a vertex's
-/// values before the first collapse; .write receives the survivor's optimal
-/// values after each collapse (both by vertex index; .write may be empty).
+/// One attribute of Attribute_quadrics: how to read (and write back) a
+/// vertex's values, and their weight. Made by vertex_attribute(map, weight).
+template <class Vertex>
+struct Vertex_attribute {
+  /// Names the attribute in error messages.
+  std::string name = "attribute";
+  /// Model units per unit of each value (> 0, finite).
+  double weight = 1.0;
+  /// Replaces `out` with the vertex's values.
+  std::function<void(const Vertex&, std::vector<double>& out)> read = {};
+  /// Stores `n` values as the vertex's (empty: the map is read-only, nothing
+  /// is written back).
+  std::function<void(const Vertex&, const double* values, std::size_t n)> write = {};
+};
+
+/// An attribute of Attribute_quadrics from a vertex property map: keyed by
+/// vertex descriptor, its value an Attribute_value (<genmesh/attribute_traits.h>:
+/// a number, an Eigen vector, std::array, std::vector, a point type). A
+/// writable map receives each survivor's optimal values; a read-only one is
+/// only read. The map is copied (property maps are handles).
+template <class Map>
+  requires Attribute_value<typename boost::property_traits<Map>::value_type>
+Vertex_attribute<typename boost::property_traits<Map>::key_type> vertex_attribute(Map map, double weight = 1.0,
+                                                                                  std::string name = "attribute") {
+  using Key = typename boost::property_traits<Map>::key_type;
+  using T = typename boost::property_traits<Map>::value_type;
+  using Traits = Attribute_traits<T>;
+  Vertex_attribute<Key> a{std::move(name), weight, {}, {}};
+  a.read = [map](const Key& v, std::vector<double>& out) {
+    const T& x = get(map, v);
+    out.resize(Traits::width(x));
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = Traits::get(x, i);
+  };
+  if constexpr (std::is_convertible_v<typename boost::property_traits<Map>::category,
+                                      boost::writable_property_map_tag>) {
+    a.write = [map, label = a.name](const Key& v, const double* values, std::size_t n) {
+      T x = get(map, v);
+      if (!Traits::assign(x, values, n))
+        throw invalid_input("simplify: attribute '" + label + "' cannot hold " + std::to_string(n) + " values");
+      put(map, v, x);
+    };
+  }
+  return a;
+}
+
+namespace detail::simplification {
+// What Attribute_quadrics::start() reads from the mesh.
+template <class Vertex>
+struct Attribute_state {
+  std::size_t dimension = 0;            // values per vertex, all attributes
+  std::vector<double> weight;           // per value
+  std::vector<std::size_t> offset;      // per attribute, then the dimension
+  std::vector<double> values;           // weighted values, by vertex index × dimension
+  std::vector<Vertex> vertex;           // by vertex index
+};
+} // namespace detail::simplification
+
+/// Garland–Heckbert 1998 quadrics over position and the values of
+/// `attributes` (vertex property maps with weights: see the top of this
+/// header). simplify() reads every vertex's values before the first collapse
+/// and writes the survivor's optimal values into each writable map after
+/// every collapse. G is the mesh type (the maps are keyed by its vertex
+/// descriptor).
+template <class G>
 struct Attribute_quadrics {
-  /// Attribute values per vertex.
-  std::size_t dimension = 0;
-  /// Reads the `dimension` values of a vertex (by vertex index) into out.
-  std::function<void(std::size_t vertex_index, double* out)> read = {};
-  /// Receives the `dimension` values of the survivor of each collapse.
-  std::function<void(std::size_t vertex_index, const double* values)> write = {};
-  /// Per value: model units per unit of the value (empty: all 1; > 0).
-  std::vector<double> weights = {};
+  using Vertex = vertex_descriptor_t<G>;
+  /// The attributes, each a map and a weight: vertex_attribute(map, weight).
+  std::vector<Vertex_attribute<Vertex>> attributes = {};
   /// Weight each triangle's quadric by its area (in R^3).
   bool area_weighted = false;
   /// The optimal point is refused (the best of the ends and the midpoint
@@ -110,8 +180,69 @@ struct Attribute_quadrics {
   double conditioning = 1e-9;
   /// The optimal position may be at most this many edge lengths from the midpoint.
   double max_distance_factor = 2.0;
+  /// Filled by start() (simplify calls it): leave it alone.
+  detail::simplification::Attribute_state<Vertex> state = {};
 
   using Vertex_data = Generalized_quadric;
+
+  /// Values per vertex, all attributes together (known after start()).
+  std::size_t dimension() const { return state.dimension; }
+
+  /// Reads every vertex's values (simplify calls it once, before face()).
+  /// Throws genmesh::invalid_input naming the attribute and the vertex on a
+  /// weight that is not positive and finite, a non-finite value, an empty
+  /// value, or a vertex whose value has another width than the first vertex's.
+  void start(const G& g) {
+    auto& s = state;
+    s = {};
+    const auto vindex = get(vertex_index, g);
+    const std::size_t vb = index_bound(vertex_index, g);
+    s.vertex.resize(vb);
+    std::vector<std::size_t> live;
+    for (const Vertex v : vertices(g)) {
+      const auto i = static_cast<std::size_t>(get(vindex, v));
+      s.vertex[i] = v;
+      live.push_back(i);
+    }
+    std::vector<double> x;
+    std::vector<std::size_t> width(attributes.size(), 0);
+    for (std::size_t k = 0; k < attributes.size(); ++k) {
+      const auto& a = attributes[k];
+      if (!(a.weight > 0) || !std::isfinite(a.weight))
+        throw invalid_input("simplify: attribute '" + a.name + "' has weight " + std::to_string(a.weight) +
+                            " (a positive finite number is needed)");
+      if (!a.read) throw invalid_input("simplify: attribute '" + a.name + "' has no read function");
+      if (live.empty()) continue;
+      a.read(s.vertex[live.front()], x);
+      if (x.empty())
+        throw invalid_input("simplify: attribute '" + a.name + "' has no values at vertex " +
+                            std::to_string(live.front()));
+      width[k] = x.size();
+    }
+    s.offset.push_back(0);
+    for (std::size_t k = 0; k < attributes.size(); ++k) {
+      s.offset.push_back(s.offset.back() + width[k]);
+      s.weight.insert(s.weight.end(), width[k], attributes[k].weight);
+    }
+    s.dimension = s.offset.back();
+    s.values.assign(vb * s.dimension, 0.0);
+    for (std::size_t k = 0; k < attributes.size(); ++k) {
+      const auto& a = attributes[k];
+      for (const std::size_t i : live) {
+        a.read(s.vertex[i], x);
+        if (x.size() != width[k])
+          throw invalid_input("simplify: attribute '" + a.name + "' has " + std::to_string(x.size()) +
+                              " values at vertex " + std::to_string(i) + " but " + std::to_string(width[k]) +
+                              " at vertex " + std::to_string(live.front()));
+        for (std::size_t j = 0; j < x.size(); ++j) {
+          if (!std::isfinite(x[j]))
+            throw invalid_input("simplify: attribute '" + a.name + "' has a non-finite value at vertex " +
+                                std::to_string(i));
+          s.values[i * s.dimension + s.offset[k] + j] = a.weight * x[j];
+        }
+      }
+    }
+  }
 
   /// A triangle's contribution (corners with their vertex indices, so that
   /// the attributes can be read).
@@ -125,7 +256,7 @@ struct Attribute_quadrics {
   Generalized_quadric border(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                              double weight) const {
     const Quadric q = detail::simplification::border_plane(a, b, c, weight, area_weighted);
-    const Eigen::Index n = 3 + static_cast<Eigen::Index>(dimension);
+    const Eigen::Index n = 3 + static_cast<Eigen::Index>(dimension());
     Generalized_quadric g{Eigen::MatrixXd::Zero(n, n), Eigen::VectorXd::Zero(n), q.c};
     g.a.topLeftCorner<3, 3>() << q.a00, q.a01, q.a02, q.a01, q.a11, q.a12, q.a02, q.a12, q.a22;
     g.b.head<3>() << q.b0, q.b1, q.b2;
@@ -157,28 +288,28 @@ struct Attribute_quadrics {
     return {q(best_at(q, x)), x};
   }
 
-  /// After a collapse: the survivor's values, the minimizer at its position.
+  /// After a collapse: the survivor's values, the minimizer at its position,
+  /// written to each writable map.
   void collapsed(std::size_t survivor, const Generalized_quadric& q, const Eigen::Vector3d& x) const {
-    if (!write || dimension == 0 || q.dimension() == 0) return;
+    if (dimension() == 0 || q.dimension() == 0) return;
     const Eigen::VectorXd v = best_at(q, x);
-    std::vector<double> values(dimension);
-    for (std::size_t i = 0; i < dimension; ++i) values[i] = v[3 + static_cast<Eigen::Index>(i)] / weight(i);
-    write(survivor, values.data());
+    std::vector<double> values;
+    for (std::size_t k = 0; k < attributes.size(); ++k) {
+      if (!attributes[k].write) continue;
+      const std::size_t o = state.offset[k], n = state.offset[k + 1] - o;
+      values.resize(n);
+      for (std::size_t i = 0; i < n; ++i) values[i] = v[3 + static_cast<Eigen::Index>(o + i)] / state.weight[o + i];
+      attributes[k].write(state.vertex[survivor], values.data(), n);
+    }
   }
 
  private:
-  double weight(std::size_t i) const { return i < weights.size() ? weights[i] : 1.0; }
-
   // (x, weight · values of vertex v).
   Eigen::VectorXd lift(std::size_t v, const Eigen::Vector3d& x) const {
-    Eigen::VectorXd r(3 + static_cast<Eigen::Index>(dimension));
+    const std::size_t k = dimension();
+    Eigen::VectorXd r(3 + static_cast<Eigen::Index>(k));
     r.head<3>() = x;
-    if (dimension > 0) {
-      if (!read) throw invalid_input("simplify: Attribute_quadrics has a dimension but no .read");
-      std::vector<double> values(dimension);
-      read(v, values.data());
-      for (std::size_t i = 0; i < dimension; ++i) r[3 + static_cast<Eigen::Index>(i)] = weight(i) * values[i];
-    }
+    for (std::size_t i = 0; i < k; ++i) r[3 + static_cast<Eigen::Index>(i)] = state.values[v * k + i];
     return r;
   }
 

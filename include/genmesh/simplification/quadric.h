@@ -27,8 +27,9 @@
 //   Vertex_data merge(const Vertex_data&, const Vertex_data&) const;
 //   Placement fixed(const Vertex_data& sum, pa, pb, x) const; // cost of collapsing a–b onto x
 //   Vertex_data face(ia, a, ib, b, ic, c) const;    // instead of face(a, b, c): with vertex indices
+//   void start(const G& g);                         // once, before the first face(): read per-vertex data
 //   void collapsed(survivor_index, const Vertex_data& sum, x) const; // after each collapse
-// (the last two let a policy read and write per-vertex data: see
+// (the last three let a policy read and write per-vertex data: see
 // Attribute_quadrics in <genmesh/simplification/attribute_quadrics.h>;
 // points are Eigen::Vector3d; merge must be commutative bit for bit, so
 // that every backend computes the same numbers.)

@@ -279,6 +279,8 @@ class Collapser {
       const double m = mean_edge_length();
       if (m > 0) policy_.mean_edge_length = m;
     }
+    if constexpr (requires { policy_.start(std::as_const(g_)); })
+      policy_.start(std::as_const(g_)); // a policy that reads per-vertex data (Attribute_quadrics)
     // Faces in index order, corners from the lowest index: the same sums on
     // every backend.
     if constexpr (!memoryless) for (const F f : faces(g_)) {
