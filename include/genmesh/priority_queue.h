@@ -37,6 +37,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -44,7 +45,10 @@ namespace genmesh {
 
 /// A min-priority queue over keys in [0, key_bound) whose priorities can be
 /// raised, lowered or erased. Smallest first by Compare; equal priorities
-/// pop in increasing key order. Keys and heap positions are stored as Index
+/// pop in increasing key order — unless Compare orders (priority, key)
+/// pairs itself, as compare(pa, ka, pb, kb) (a strict total order: a caller
+/// whose ties go by something derived from the key, which then need not be
+/// stored in the priority). Keys and heap positions are stored as Index
 /// (std::uint32_t halves the key → position array and may shrink the heap
 /// entries; then keys and sizes must stay below its maximum).
 template <class Priority, class Compare = std::less<Priority>, std::unsigned_integral Index = std::size_t>
@@ -90,9 +94,10 @@ class Mutable_priority_queue {
       return;
     }
     const std::size_t i = position_[key];
-    const bool up = before(p, key, heap_[i].priority, key);
     heap_[i].priority = std::move(p);
-    if (up) sift_up(i);
+    // Against the parent, not the old priority: with a keyed Compare the
+    // order of an unchanged priority may have moved.
+    if (i > 0 && before(heap_[i], heap_[(i - 1) / arity])) sift_up(i);
     else sift_down(i);
   }
 
@@ -159,11 +164,16 @@ class Mutable_priority_queue {
     Index key;
   };
 
-  // The total order: by priority, ties by key.
+  // The total order: by priority, ties by key (or Compare's own, keyed).
   bool before(const Priority& pa, std::size_t ka, const Priority& pb, std::size_t kb) const {
-    if (compare_(pa, pb)) return true;
-    if (compare_(pb, pa)) return false;
-    return ka < kb;
+    if constexpr (std::is_invocable_r_v<bool, const Compare&, const Priority&, std::size_t, const Priority&,
+                                        std::size_t>) {
+      return compare_(pa, ka, pb, kb);
+    } else {
+      if (compare_(pa, pb)) return true;
+      if (compare_(pb, pa)) return false;
+      return ka < kb;
+    }
   }
   bool before(const Entry& a, const Entry& b) const { return before(a.priority, a.key, b.priority, b.key); }
 

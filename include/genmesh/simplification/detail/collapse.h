@@ -66,15 +66,6 @@ concept Simplifiable =
       { genmesh::can_collapse_edge(e, cg) } -> std::convertible_to<bool>;
     };
 
-// Queue priority: the cost, ties broken by the sorted vertex-index pair.
-struct Priority {
-  double cost;
-  std::uint64_t pair;
-  friend bool operator<(const Priority& a, const Priority& b) {
-    return a.cost < b.cost || (a.cost == b.cost && a.pair < b.pair);
-  }
-};
-
 // The policy's merge and fixed placement, or the quadric defaults.
 template <class Policy, class Data>
 Data merge(const Policy& p, const Data& x, const Data& y) {
@@ -150,7 +141,7 @@ class Collapser {
         r.stop_reason = Stop_reason::no_collapse_left;
         break;
       }
-      const double error = std::sqrt(queue_.top_priority().cost);
+      const double error = std::sqrt(queue_.top_priority());
       if (error > max_error) {
         r.stop_reason = Stop_reason::max_error;
         break;
@@ -337,11 +328,11 @@ class Collapser {
     const double deg = std::clamp(o_.max_normal_deviation, 0.0, 180.0);
     cos_max_ = std::max(0.0, std::cos(deg * std::numbers::pi / 180.0));
     cos_min_angle_ = o_.min_angle > 0 ? std::cos(std::min(o_.min_angle, 60.0) * std::numbers::pi / 180.0) : 1.0;
-    queue_ = Queue(eb);
+    queue_ = Queue(eb, Order{this});
     queue_.reserve(eb);
     Placement pl;
     for (const E e : edges(g_))
-      if (evaluate(halfedge(e, g_), pl)) queue_.push(ei(e), priority(halfedge(e, g_), pl.cost));
+      if (evaluate(halfedge(e, g_), pl)) queue_.push(ei(e), pl.cost);
   }
 
   // Feature edges (interior edges only: borders follow .border) from
@@ -385,11 +376,27 @@ class Collapser {
     on_line_[i] = n == 2 && !locked_[i];
   }
 
-  Priority priority(H h, double cost) const {
+  // The sorted vertex-index pair of edge k: what breaks ties of cost in the
+  // queue (the same on every backend, unlike edge indices). Read from the
+  // mesh when needed, not stored in the queue's entries (16 bytes instead of
+  // 24): every queued edge whose ends a collapse changes is requeued after
+  // it.
+  std::uint64_t pair(std::size_t k) const {
+    const H h = halfedge(edesc_[k], g_);
     std::uint64_t a = vi(source(h, g_)), b = vi(target(h, g_));
     if (a > b) std::swap(a, b);
-    return {cost, (a << 32) | b};
+    return (a << 32) | b;
   }
+
+  // The queue's order: by cost, ties by the vertex-index pair.
+  struct Order {
+    const Collapser* c;
+    bool operator()(double a, std::size_t ka, double b, std::size_t kb) const {
+      if (a < b) return true;
+      if (b < a) return false;
+      return ka != kb && c->pair(ka) < c->pair(kb);
+    }
+  };
 
   // Where a collapse may put its vertex (see evaluate).
   enum class Where { anywhere, at_a, at_b, on_segment, nowhere };
@@ -943,7 +950,7 @@ class Collapser {
     refused_[k] = 0;
     const H h = halfedge(e, g_);
     Placement pl;
-    if (evaluate(h, pl)) queue_.update(k, priority(h, pl.cost));
+    if (evaluate(h, pl)) queue_.update(k, pl.cost);
     else queue_.erase(k);
   }
 
@@ -967,13 +974,18 @@ class Collapser {
       return false;
     }
     const bool top = !border(h), bottom = !border(oh);
-    if (top) {
-      queue_.erase(ei(edge(next(h, g_), g_)));
-      queue_.erase(ei(edge(prev(h, g_), g_)));
-    }
-    if (bottom) {
-      queue_.erase(ei(edge(next(oh, g_), g_)));
-      queue_.erase(ei(edge(prev(oh, g_), g_)));
+    if (top) queue_.erase(ei(edge(next(h, g_), g_)));
+    if (bottom) queue_.erase(ei(edge(prev(oh, g_), g_)));
+    {
+      // p's edges (with those of e's faces at p) leave the queue before the
+      // collapse changes their vertex pairs, which order ties (see pair());
+      // as q's edges they are queued again after it.
+      const H start = halfedge(p, g_);
+      H x = start;
+      do {
+        queue_.erase(ei(edge(x, g_)));
+        x = opposite(next(x, g_), g_);
+      } while (x != start);
     }
     const std::size_t ip = vi(p), iq = vi(q);
     // The two edges (p, apex), (q, apex) of each face of e become one: a
@@ -1160,8 +1172,9 @@ class Collapser {
   std::size_t grid_faces_ = 0;
   std::vector<std::uint8_t> feature_, on_line_;
   std::vector<E> edesc_;
-  // 32-bit positions: edge indices fit (the mesh's own indices are 32-bit).
-  using Queue = Mutable_priority_queue<Priority, std::less<Priority>, std::uint32_t>;
+  // 32-bit keys and positions: edge indices fit (the mesh's own indices are
+  // 32-bit). Entries of a double and a key: 16 bytes.
+  using Queue = Mutable_priority_queue<double, Order, std::uint32_t>;
   Queue queue_;
   // Memoryless policies: the profile's scratch, and the collapse count at
   // which each edge was last requeued.
