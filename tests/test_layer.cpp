@@ -21,6 +21,7 @@
 #include <type_traits>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <random>
@@ -149,6 +150,28 @@ TEST(PriorityQueue, EqualPrioritiesPopInIncreasingKeyOrder) {
   std::vector<std::size_t> order;
   while (!q.empty()) order.push_back(q.pop());
   EXPECT_EQ(order, (std::vector<std::size_t>{0, 2, 3, 5, 7, 8, 9}));
+}
+
+// A keyed Compare orders (priority, key) pairs itself (here: ties by a
+// rank derived from the key, as simplify's vertex pairs), with 32-bit keys.
+TEST(PriorityQueue, KeyedCompareBreaksTiesAnd32BitKeys) {
+  const std::vector<int> rank{4, 0, 3, 1, 2, 5};  // by key
+  struct By_rank {
+    const std::vector<int>* rank;
+    bool operator()(double a, std::size_t ka, double b, std::size_t kb) const {
+      if (a < b) return true;
+      if (b < a) return false;
+      return (*rank)[ka] < (*rank)[kb];
+    }
+  };
+  genmesh::Mutable_priority_queue<double, By_rank, std::uint32_t> q(6, By_rank{&rank});
+  for (std::size_t k = 0; k < 6; ++k) q.push(k, 1.0);
+  q.update(5, 0.5);  // lowered out of the tie: first
+  q.update(1, 2.0);  // raised out of it: last
+  q.update(1, 1.0);  // back into it: its rank (0) puts it first of the ties
+  std::vector<std::size_t> order;
+  while (!q.empty()) order.push_back(q.pop());
+  EXPECT_EQ(order, (std::vector<std::size_t>{5, 1, 3, 4, 2, 0}));
 }
 
 TEST(PriorityQueue, UpdateEraseGrowClear) {

@@ -4,9 +4,9 @@
 // Per vertex: the policy's data (a quadric; nothing for a memoryless
 // policy), a copy of the point in double, locked / on-a-feature-line flags
 // and a "has a refused edge" hint; per edge: the descriptor, refused and
-// feature flags; per face (with the self-intersection guard): its box, a
-// stamp and an alive flag. Collapse never adds elements, so these are
-// vectors sized once by the index bounds.
+// feature flags; per face (with the self-intersection guard): its box
+// (float) and corners, in a spatial hash. Collapse never adds elements, so
+// these are vectors sized once by the index bounds.
 //
 // One collapse: pop the cheapest edge; recompute its placement (the same
 // numbers as when it was queued; where locks and feature lines allow it);
