@@ -22,7 +22,9 @@
 // most 50 passes; bad triangles: 2 passes; a pass after the first looks only
 // at the edges near the previous pass's flips (the others would decide as
 // before). Smoothing: fixed steps. Projection: one Aabb_tree query per
-// vertex, started at the triangle it was last projected to.
+// vertex, started at the triangle it was last projected to. The final
+// clean-up (improve_min_angle): at most 3 passes over the triangles still
+// below 36°, each move a fixed number of candidate points.
 #pragma once
 
 #include <genmesh/concepts.h>
