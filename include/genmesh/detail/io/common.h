@@ -600,6 +600,8 @@ class Soup_source {
   explicit Soup_source(const Polygon_soup& s) noexcept : s_(s) {}
   std::size_t num_points() const noexcept { return s_.num_points(); }
   std::size_t num_faces() const noexcept { return s_.num_faces(); }
+  /// The per-point attribute channels (check_attributes_for_write() first).
+  std::span<const Soup_attribute> vertex_attributes() const noexcept { return s_.vertex_attributes; }
   template <class F>
   void for_each_point(F&& f) const {
     for (std::size_t v = 0; v < s_.num_points(); ++v) f(v, s_.points[v]);
@@ -634,6 +636,72 @@ inline void check_face_for_write(std::span<const Polygon_soup::Index> c, std::si
                                std::to_string(i) + " out of range (" +
                                std::to_string(num_points) + " points)");
 }
+/// Throws io_error unless every channel has width() values per point, all
+/// finite, and a component name for each (the PLY writer writes the names).
+inline void check_attributes_for_write(std::span<const Soup_attribute> channels, std::size_t num_points,
+                                       const std::string& file) {
+  for (const Soup_attribute& a : channels) {
+    if (a.width() == 0 || a.name.empty())
+      throw io_error(file, "cannot write: attribute " + quote(a.name) + " has no name or no components");
+    for (const std::string& c : a.components)
+      if (c.empty() || std::any_of(c.begin(), c.end(), [](char x) { return Text_cursor::is_space_or_newline(x); }))
+        throw io_error(file, "cannot write: attribute " + quote(a.name) + " has a component named " + quote(c) +
+                                 " (empty or with white space)");
+    if (a.values.size() != num_points * a.width())
+      throw io_error(file, "cannot write: attribute " + quote(a.name) + " has " + std::to_string(a.values.size()) +
+                               " values for " + std::to_string(num_points) + " points of " +
+                               std::to_string(a.width()) + " values each");
+    for (std::size_t i = 0; i < a.values.size(); ++i)
+      if (!std::isfinite(a.values[i]))
+        throw io_error(file, "cannot write: point " + std::to_string(i / a.width()) + " has a non-finite " +
+                                 quote(a.components[i % a.width()]) + " value");
+  }
+}
+
+/// v as type t: rounded and clamped to an integer type's range.
+template <class T>
+T attribute_as(double v) {
+  if constexpr (std::is_integral_v<T>)
+    return static_cast<T>(std::clamp(std::nearbyint(v), static_cast<double>(std::numeric_limits<T>::lowest()),
+                                     static_cast<double>(std::numeric_limits<T>::max())));
+  else
+    return static_cast<T>(v);
+}
+
+/// Appends an attribute value as text: an integer for integer types, the
+/// shortest round-trip float for float32, else append_double.
+inline void append_attribute(std::string& out, double v, Scalar_type t, int precision) {
+  switch (t) {
+    case Scalar_type::int8: append_int(out, attribute_as<std::int8_t>(v)); return;
+    case Scalar_type::uint8: append_int(out, attribute_as<std::uint8_t>(v)); return;
+    case Scalar_type::int16: append_int(out, attribute_as<std::int16_t>(v)); return;
+    case Scalar_type::uint16: append_int(out, attribute_as<std::uint16_t>(v)); return;
+    case Scalar_type::int32: append_int(out, attribute_as<std::int32_t>(v)); return;
+    case Scalar_type::uint32: append_int(out, attribute_as<std::uint32_t>(v)); return;
+    case Scalar_type::float32: {
+      char b[32];
+      const auto r = std::to_chars(b, b + sizeof b, static_cast<float>(v));
+      out.append(b, r.ptr);
+      return;
+    }
+    case Scalar_type::float64: append_double(out, v, precision); return;
+  }
+}
+
+/// Appends an attribute value in little-endian binary as type t.
+inline void store_attribute_le(std::string& out, double v, Scalar_type t) {
+  switch (t) {
+    case Scalar_type::int8: store_le(out, attribute_as<std::int8_t>(v)); return;
+    case Scalar_type::uint8: store_le(out, attribute_as<std::uint8_t>(v)); return;
+    case Scalar_type::int16: store_le(out, attribute_as<std::int16_t>(v)); return;
+    case Scalar_type::uint16: store_le(out, attribute_as<std::uint16_t>(v)); return;
+    case Scalar_type::int32: store_le(out, attribute_as<std::int32_t>(v)); return;
+    case Scalar_type::uint32: store_le(out, attribute_as<std::uint32_t>(v)); return;
+    case Scalar_type::float32: store_le(out, static_cast<float>(v)); return;
+    case Scalar_type::float64: store_le(out, v); return;
+  }
+}
+
 inline void check_point_for_write(const Eigen::Vector3d& p, std::size_t v, const std::string& file) {
   if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
     throw io_error(file, "cannot write: point " + std::to_string(v) + " has a non-finite coordinate");
