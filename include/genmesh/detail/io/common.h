@@ -5,6 +5,7 @@
 // Private to <genmesh/io.h>; nothing here is API.
 #pragma once
 
+#include <genmesh/attribute_traits.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/polygon_soup.h>
 
@@ -658,48 +659,41 @@ inline void check_attributes_for_write(std::span<const Soup_attribute> channels,
   }
 }
 
-/// v as type t: rounded and clamped to an integer type's range.
-template <class T>
-T attribute_as(double v) {
-  if constexpr (std::is_integral_v<T>)
-    return static_cast<T>(std::clamp(std::nearbyint(v), static_cast<double>(std::numeric_limits<T>::lowest()),
-                                     static_cast<double>(std::numeric_limits<T>::max())));
-  else
-    return static_cast<T>(v);
+/// f.template operator()<T>() with T the C++ type of t.
+template <class F>
+decltype(auto) visit_scalar_type(Scalar_type t, F&& f) {
+  switch (t) {
+    case Scalar_type::int8: return f.template operator()<std::int8_t>();
+    case Scalar_type::uint8: return f.template operator()<std::uint8_t>();
+    case Scalar_type::int16: return f.template operator()<std::int16_t>();
+    case Scalar_type::uint16: return f.template operator()<std::uint16_t>();
+    case Scalar_type::int32: return f.template operator()<std::int32_t>();
+    case Scalar_type::uint32: return f.template operator()<std::uint32_t>();
+    case Scalar_type::float32: return f.template operator()<float>();
+    case Scalar_type::float64: break;
+  }
+  return f.template operator()<double>();
 }
 
-/// Appends an attribute value as text: an integer for integer types, the
-/// shortest round-trip float for float32, else append_double.
+/// Appends an attribute value as text in type t (integers rounded and
+/// clamped to the type's range, floats in their shortest round-trip form;
+/// doubles as append_double).
 inline void append_attribute(std::string& out, double v, Scalar_type t, int precision) {
-  switch (t) {
-    case Scalar_type::int8: append_int(out, attribute_as<std::int8_t>(v)); return;
-    case Scalar_type::uint8: append_int(out, attribute_as<std::uint8_t>(v)); return;
-    case Scalar_type::int16: append_int(out, attribute_as<std::int16_t>(v)); return;
-    case Scalar_type::uint16: append_int(out, attribute_as<std::uint16_t>(v)); return;
-    case Scalar_type::int32: append_int(out, attribute_as<std::int32_t>(v)); return;
-    case Scalar_type::uint32: append_int(out, attribute_as<std::uint32_t>(v)); return;
-    case Scalar_type::float32: {
+  visit_scalar_type(t, [&]<class T>() {
+    const T x = genmesh::detail::attribute_component<T>(v);
+    if constexpr (std::is_same_v<T, double>) {
+      append_double(out, x, precision);
+    } else {
       char b[32];
-      const auto r = std::to_chars(b, b + sizeof b, static_cast<float>(v));
+      const auto r = std::to_chars(b, b + sizeof b, x);
       out.append(b, r.ptr);
-      return;
     }
-    case Scalar_type::float64: append_double(out, v, precision); return;
-  }
+  });
 }
 
 /// Appends an attribute value in little-endian binary as type t.
 inline void store_attribute_le(std::string& out, double v, Scalar_type t) {
-  switch (t) {
-    case Scalar_type::int8: store_le(out, attribute_as<std::int8_t>(v)); return;
-    case Scalar_type::uint8: store_le(out, attribute_as<std::uint8_t>(v)); return;
-    case Scalar_type::int16: store_le(out, attribute_as<std::int16_t>(v)); return;
-    case Scalar_type::uint16: store_le(out, attribute_as<std::uint16_t>(v)); return;
-    case Scalar_type::int32: store_le(out, attribute_as<std::int32_t>(v)); return;
-    case Scalar_type::uint32: store_le(out, attribute_as<std::uint32_t>(v)); return;
-    case Scalar_type::float32: store_le(out, static_cast<float>(v)); return;
-    case Scalar_type::float64: store_le(out, v); return;
-  }
+  visit_scalar_type(t, [&]<class T>() { store_le(out, genmesh::detail::attribute_component<T>(v)); });
 }
 
 inline void check_point_for_write(const Eigen::Vector3d& p, std::size_t v, const std::string& file) {

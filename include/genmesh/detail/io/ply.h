@@ -56,17 +56,16 @@ inline const char* ply_type_name(Ply_type t) {
   }
   return "double";
 }
-/// The range of an integer type (as doubles).
+/// The range of a type's values (as doubles; infinite for floats).
 inline std::pair<double, double> ply_integer_range(Ply_type t) {
-  switch (t) {
-    case Ply_type::int8: return {-128.0, 127.0};
-    case Ply_type::uint8: return {0.0, 255.0};
-    case Ply_type::int16: return {-32768.0, 32767.0};
-    case Ply_type::uint16: return {0.0, 65535.0};
-    case Ply_type::int32: return {-2147483648.0, 2147483647.0};
-    case Ply_type::uint32: return {0.0, 4294967295.0};
-    default: return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-  }
+  return visit_scalar_type(t, []<class T>() {
+    if constexpr (std::is_integral_v<T>)
+      return std::pair<double, double>(static_cast<double>(std::numeric_limits<T>::lowest()),
+                                       static_cast<double>(std::numeric_limits<T>::max()));
+    else
+      return std::pair<double, double>(-std::numeric_limits<double>::infinity(),
+                                       std::numeric_limits<double>::infinity());
+  });
 }
 
 /// A binary value of type t at p, converted to R: double for coordinates,
