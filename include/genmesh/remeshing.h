@@ -78,6 +78,7 @@ Remeshing_result isotropic_remeshing(G& g, const Remeshing_options& options = {}
     ++r.result().iterations;
     visitor.on_step("iteration", static_cast<std::size_t>(i + 1), static_cast<std::size_t>(options.iterations));
   }
+  if (options.iterations > 0) r.improve_min_angle();
   r.finish();
   visitor.on_finished(std::as_const(g));
   return r.result();

@@ -314,6 +314,139 @@ public:
     return n;
   }
 
+  /// The final clean-up, after the last round's smoothing and projection:
+  /// the triangles with an angle below 36° that the flips could not help
+  /// (on large inputs, a tail made by the last smoothing). Each free corner
+  /// of such a triangle moves to the best of a few points — the area-weighted
+  /// and the uniform smoothing targets of its ring and halfway to each, in
+  /// its tangent plane, then projected onto the input surface — if that
+  /// raises the smallest angle of its ring and keeps every ring triangle's
+  /// orientation; then the bad-triangle flips again. So the smallest angle
+  /// of the mesh never drops, constrained and fixed vertices stay, and every
+  /// moved vertex ends on the input surface. At most 3 passes. Returns the
+  /// vertices moved.
+  std::size_t improve_min_angle() {
+    const double bad = std::cos(36.0 * std::numbers::pi / 180.0);
+    grow();
+    auto is_bad = [&](F f) {
+      // From the canonical corner: the test's rounding must not depend on the backend.
+      const H h0 = detail::geom::canonical_halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
+      return has_angle_below(pt(target(h0, g_)), pt(target(h1, g_)), pt(target(h2, g_)), bad * bad);
+    };
+    std::vector<F> todo; // bad triangles, by face index
+    for (auto f : faces(g_))
+      if (is_bad(f)) todo.push_back(f);
+    std::vector<int> seen(index_bound(vertex_index, g_), 0);
+    std::size_t moved = 0;
+    for (int pass = 1; pass <= 3 && !todo.empty(); ++pass) {
+      std::vector<F> touched;
+      auto touch_ring = [&](V v) {
+        for_each_in_any_order(v, [&](H x) {
+          if (!is_border(x)) touched.push_back(face(x, g_));
+        });
+      };
+      for (const F f : todo) {
+        if (!is_bad(f)) continue;
+        const H h0 = detail::geom::canonical_halfedge(f, g_);
+        for (const H x : {h0, next(h0, g_), next(next(h0, g_), g_)}) {
+          const V v = target(x, g_);
+          if ((vflag_at(v) & (v_constrained | v_fixed)) || seen[vid(v)] == pass) continue;
+          seen[vid(v)] = pass;
+          if (!relocate(v)) continue;
+          ++moved;
+          touch_ring(v);
+        }
+      }
+      // Then the flips of remove_bad_triangles on what is still bad.
+      for (const F f : todo) {
+        if (!is_bad(f)) continue;
+        const H h0 = detail::geom::canonical_halfedge(f, g_);
+        for (const H h : {h0, next(h0, g_), next(next(h0, g_), g_)}) {
+          if (face(h, g_) != f || !free_inner(h)) continue; // f changed by a flip of this loop
+          const auto [before, after] = flip_max_cos(h);
+          if (!(before > bad && after < before - 1e-9)) continue;
+          if (!flip_keeps_orientation(h) || !genmesh::can_flip_edge(h, std::as_const(g_))) continue;
+          genmesh::flip_edge(h, g_, *vis_);
+          ++result_.flips;
+          for (const H y : {h, opposite(h, g_)}) {
+            touched.push_back(face(y, g_));
+          }
+          break;
+        }
+      }
+      // The next pass: what changed and is still bad, by face index.
+      std::sort(touched.begin(), touched.end(), [&](F x, F y) { return get(fi_, x) < get(fi_, y); });
+      touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+      todo.clear();
+      for (const F f : touched)
+        if (is_bad(f)) todo.push_back(f);
+    }
+    return moved;
+  }
+
+  /// Moves the free vertex v as improve_min_angle() says; whether it moved.
+  bool relocate(V v) {
+    boost::container::small_vector<Eigen::Vector3d, 16> nb;
+    for_each_in(v, [&](H x) { nb.push_back(pt(source(x, g_))); });
+    const auto k = static_cast<std::uint32_t>(nb.size());
+    if (k < 3) return false;
+    const Eigen::Vector3d p = pt(v);
+    auto at = [&](std::uint32_t j) -> const Eigen::Vector3d& { return nb[j]; };
+    // Face j is (nb[j], v, nb[j + 1]).
+    auto worst = [&](const Eigen::Vector3d& q) {
+      double c = -1;
+      for (std::uint32_t j = 0; j < k; ++j) c = std::max(c, max_cos(nb[j], q, nb[j + 1 == k ? 0 : j + 1]));
+      return c;
+    };
+    auto oriented = [&](const Eigen::Vector3d& q) {
+      for (std::uint32_t j = 0; j < k; ++j) {
+        const Eigen::Vector3d& a = nb[j];
+        const Eigen::Vector3d& c = nb[j + 1 == k ? 0 : j + 1];
+        if (!(triangle_normal(a, q, c).dot(triangle_normal(a, p, c)) > 0)) return false;
+      }
+      return true;
+    };
+    const double before = worst(p);
+    double best = before - 1e-9; // a clear gain only
+    Eigen::Vector3d best_q = p;
+    std::size_t best_triangle = 0;
+    double best_value = 0;
+    bool found = false;
+    auto candidate = [&](const Eigen::Vector3d& c) {
+      if (!c.allFinite()) return false;
+      Eigen::Vector3d q = c;
+      std::size_t triangle = ref_ ? on_triangle_[vid(v)] : 0;
+      double value = sizing_.empty() ? 0 : sizing_[vid(v)];
+      if (ref_) q = ref_->project(c, on_[vid(v)], triangle, sizing_.empty() ? nullptr : &value);
+      const double w = worst(q);
+      if (!(w < best) || !oriented(q)) return false;
+      best = w, best_q = q, best_triangle = triangle, best_value = value, found = true;
+      return true;
+    };
+    // The smoothing targets, then a pattern search towards and away from
+    // each neighbour with a shrinking step (the smallest angle of the ring
+    // is not smooth in the position: no gradient to follow).
+    const Eigen::Vector3d ua = relaxation_move(p, k, at, Smoothing::area_weighted);
+    const Eigen::Vector3d uu = relaxation_move(p, k, at, Smoothing::uniform);
+    for (const Eigen::Vector3d& c : {Eigen::Vector3d(p + ua), Eigen::Vector3d(p + 0.5 * ua), Eigen::Vector3d(p + uu),
+                                     Eigen::Vector3d(p + 0.5 * uu)})
+      candidate(c);
+    double step = 0.1;
+    for (int round = 0; round < 8; ++round) {
+      const Eigen::Vector3d base = best_q;
+      bool better = false;
+      for (std::uint32_t j = 0; j < k; ++j)
+        for (const double t : {step, -step}) better = candidate(base + t * (nb[j] - base)) || better;
+      if (!better) step *= 0.5;
+    }
+    if (!found) return false;
+    set_pt(v, best_q);
+    if (ref_) on_[vid(v)] = best_q, on_triangle_[vid(v)] = best_triangle;
+    if (!sizing_.empty()) sizing_[vid(v)] = best_value;
+    vis_->on_vertex_moved(v, std::as_const(g_));
+    return true;
+  }
+
   /// Whether triangle (a, b, c) has an angle below the one whose squared
   /// cosine is cos2: cos² > cos2 at an acute corner, compared without roots.
   static bool has_angle_below(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, double cos2) {
@@ -440,80 +573,13 @@ public:
     }
     std::vector<Eigen::Vector3d> moved(free.size());
     const double lambda = o_.smoothing_step_size;
-    const bool uniform = o_.smoothing == Smoothing::uniform;
-    const bool squared_areas = o_.smoothing == Smoothing::area_weighted;
     for (int step = 0; step < o_.smoothing_steps; ++step) {
       for (std::size_t i = 0; i < free.size(); ++i) {
         const Eigen::Vector3d p = pos[free_id[i]];
         const std::uint32_t b = offset[i], k = offset[i + 1] - b;
         const std::uint32_t* r = ring.data() + b;
-        // Inner vertex: the ring is closed, face j is (a, v, c) with
-        // a = r[j], c = r[j + 1]; its normal (c − p) × (a − p) = d × (a − p),
-        // d = c − a. The normal (their sum) is the tangent plane's.
-        Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-        Eigen::Vector3d u = Eigen::Vector3d::Zero();
-        bool solved = false;
-        if (squared_areas) {
-          // The point minimizing the sum of the squared areas of v's
-          // triangles (pmp-library's rule): A x = rhs with
-          // A = Σ w (|d|² I − d dᵀ), rhs = Σ w (|d|² a − d (d·a)),
-          // w = 1/|d|; A symmetric, solved by its adjugate. One pass over
-          // the ring for the normal and the system, each neighbour read once.
-          double s = 0, m00 = 0, m01 = 0, m02 = 0, m11 = 0, m12 = 0, m22 = 0;
-          Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
-          Eigen::Vector3d a = pos[r[0]];
-          for (std::uint32_t j = 0; j < k; ++j) {
-            const Eigen::Vector3d c = pos[r[j + 1 == k ? 0 : j + 1]];
-            const Eigen::Vector3d d = c - a;
-            normal += d.cross(a - p);
-            const double l2 = d.squaredNorm();
-            if (l2 > 0) {
-              const double l = std::sqrt(l2), w = 1.0 / l;
-              s += l;
-              const Eigen::Vector3d wd = w * d;
-              m00 += wd.x() * d.x(), m01 += wd.x() * d.y(), m02 += wd.x() * d.z();
-              m11 += wd.y() * d.y(), m12 += wd.y() * d.z(), m22 += wd.z() * d.z();
-              rhs += l * a - wd * d.dot(a);
-            }
-            a = c;
-          }
-          const double a00 = s - m00, a11 = s - m11, a22 = s - m22, a01 = -m01, a02 = -m02, a12 = -m12;
-          const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
-          const double det = a00 * c00 + a01 * c01 + a02 * c02;
-          const double scale2 = a00 * a00 + a11 * a11 + a22 * a22 + 2 * (a01 * a01 + a02 * a02 + a12 * a12);
-          if (std::abs(det) > 1e-12 * scale2 * std::sqrt(scale2)) {
-            const double c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
-            const Eigen::Vector3d x(c00 * rhs.x() + c01 * rhs.y() + c02 * rhs.z(),
-                                    c01 * rhs.x() + c11 * rhs.y() + c12 * rhs.z(),
-                                    c02 * rhs.x() + c12 * rhs.y() + c22 * rhs.z());
-            u = x / det - p;
-            solved = true;
-          }
-        } else {
-          for (std::uint32_t j = 0; j < k; ++j)
-            normal += triangle_normal(p, pos[r[j + 1 == k ? 0 : j + 1]], pos[r[j]]);
-        }
-        if (!solved) {
-          // Uniform: the mean of the neighbours; area-weighted fallback
-          // (singular system): the area-weighted centroid of v's triangles.
-          Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-          double weight = 0;
-          for (std::uint32_t j = 0; j < k; ++j) {
-            const Eigen::Vector3d& a = pos[r[j]];
-            if (uniform) {
-              sum += a;
-              weight += 1;
-            } else {
-              const Eigen::Vector3d& c = pos[r[j + 1 == k ? 0 : j + 1]];
-              const double area = triangle_normal(p, c, a).norm();
-              sum += area * (a + c + p);
-              weight += 3 * area;
-            }
-          }
-          if (weight > 0) u = sum / weight - p;
-        }
-        const double nn = normal.squaredNorm();
-        if (nn > 0) u -= normal * (u.dot(normal) / nn);
+        const Eigen::Vector3d u = relaxation_move(p, k, [&](std::uint32_t j) -> const Eigen::Vector3d& { return pos[r[j]]; },
+                                                  o_.smoothing);
         moved[i] = p + lambda * u;
       }
       for (std::size_t i = 0; i < free.size(); ++i)
@@ -524,6 +590,85 @@ public:
       vis_->on_vertex_moved(free[i], std::as_const(g_));
     }
     return free.size();
+  }
+
+  /// The tangential move of a free (inner) vertex at p whose ring
+  /// neighbours, in the canonical order, are nb(0), …, nb(k − 1): to the
+  /// point the smoothing rule asks for, minus its component along the ring's
+  /// normal. Zero for Smoothing::none.
+  template <class Neighbour>
+  static Eigen::Vector3d relaxation_move(const Eigen::Vector3d& p, std::uint32_t k, Neighbour&& nb, Smoothing rule) {
+    const bool uniform = rule == Smoothing::uniform;
+    const bool squared_areas = rule == Smoothing::area_weighted;
+    if (rule == Smoothing::none) return Eigen::Vector3d::Zero();
+    // Inner vertex: the ring is closed, face j is (a, v, c) with
+    // a = r[j], c = r[j + 1]; its normal (c − p) × (a − p) = d × (a − p),
+    // d = c − a. The normal (their sum) is the tangent plane's.
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+    Eigen::Vector3d u = Eigen::Vector3d::Zero();
+    bool solved = false;
+    if (squared_areas) {
+      // The point minimizing the sum of the squared areas of v's
+      // triangles (pmp-library's rule): A x = rhs with
+      // A = Σ w (|d|² I − d dᵀ), rhs = Σ w (|d|² a − d (d·a)),
+      // w = 1/|d|; A symmetric, solved by its adjugate. One pass over
+      // the ring for the normal and the system, each neighbour read once.
+      double s = 0, m00 = 0, m01 = 0, m02 = 0, m11 = 0, m12 = 0, m22 = 0;
+      Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+      Eigen::Vector3d a = nb(0);
+      for (std::uint32_t j = 0; j < k; ++j) {
+        const Eigen::Vector3d c = nb(j + 1 == k ? 0 : j + 1);
+        const Eigen::Vector3d d = c - a;
+        normal += d.cross(a - p);
+        const double l2 = d.squaredNorm();
+        if (l2 > 0) {
+          const double l = std::sqrt(l2), w = 1.0 / l;
+          s += l;
+          const Eigen::Vector3d wd = w * d;
+          m00 += wd.x() * d.x(), m01 += wd.x() * d.y(), m02 += wd.x() * d.z();
+          m11 += wd.y() * d.y(), m12 += wd.y() * d.z(), m22 += wd.z() * d.z();
+          rhs += l * a - wd * d.dot(a);
+        }
+        a = c;
+      }
+      const double a00 = s - m00, a11 = s - m11, a22 = s - m22, a01 = -m01, a02 = -m02, a12 = -m12;
+      const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
+      const double det = a00 * c00 + a01 * c01 + a02 * c02;
+      const double scale2 = a00 * a00 + a11 * a11 + a22 * a22 + 2 * (a01 * a01 + a02 * a02 + a12 * a12);
+      if (std::abs(det) > 1e-12 * scale2 * std::sqrt(scale2)) {
+        const double c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
+        const Eigen::Vector3d x(c00 * rhs.x() + c01 * rhs.y() + c02 * rhs.z(),
+                                c01 * rhs.x() + c11 * rhs.y() + c12 * rhs.z(),
+                                c02 * rhs.x() + c12 * rhs.y() + c22 * rhs.z());
+        u = x / det - p;
+        solved = true;
+      }
+    } else {
+      for (std::uint32_t j = 0; j < k; ++j)
+        normal += triangle_normal(p, nb(j + 1 == k ? 0 : j + 1), nb(j));
+    }
+    if (!solved) {
+      // Uniform: the mean of the neighbours; area-weighted fallback
+      // (singular system): the area-weighted centroid of v's triangles.
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      double weight = 0;
+      for (std::uint32_t j = 0; j < k; ++j) {
+        const Eigen::Vector3d& a = nb(j);
+        if (uniform) {
+          sum += a;
+          weight += 1;
+        } else {
+          const Eigen::Vector3d& c = nb(j + 1 == k ? 0 : j + 1);
+          const double area = triangle_normal(p, c, a).norm();
+          sum += area * (a + c + p);
+          weight += 3 * area;
+        }
+      }
+      if (weight > 0) u = sum / weight - p;
+    }
+    const double nn = normal.squaredNorm();
+    if (nn > 0) u -= normal * (u.dot(normal) / nn);
+    return u;
   }
 
   /// Projects every vertex that may move onto the reference surface.
