@@ -33,6 +33,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <concepts>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -43,8 +44,10 @@ namespace genmesh {
 
 /// A min-priority queue over keys in [0, key_bound) whose priorities can be
 /// raised, lowered or erased. Smallest first by Compare; equal priorities
-/// pop in increasing key order.
-template <class Priority, class Compare = std::less<Priority>>
+/// pop in increasing key order. Keys and heap positions are stored as Index
+/// (std::uint32_t halves the key → position array and may shrink the heap
+/// entries; then keys and sizes must stay below its maximum).
+template <class Priority, class Compare = std::less<Priority>, std::unsigned_integral Index = std::size_t>
 class Mutable_priority_queue {
  public:
   using priority_type = Priority;
@@ -75,7 +78,7 @@ class Mutable_priority_queue {
   void push(std::size_t key, Priority p) {
     assert(!contains(key));
     if (key >= position_.size()) grow_for(key);
-    heap_.push_back(Entry{std::move(p), key});
+    heap_.push_back(Entry{std::move(p), static_cast<Index>(key)});
     sift_up(heap_.size() - 1);
   }
 
@@ -149,11 +152,11 @@ class Mutable_priority_queue {
 
  private:
   static constexpr std::size_t arity = 4;
-  static constexpr std::size_t absent = std::numeric_limits<std::size_t>::max();
+  static constexpr Index absent = std::numeric_limits<Index>::max();
 
   struct Entry {
     Priority priority;
-    std::size_t key;
+    Index key;
   };
 
   // The total order: by priority, ties by key.
@@ -176,7 +179,7 @@ class Mutable_priority_queue {
     if (i != last) {
       heap_[i] = std::move(heap_[last]);
       heap_.pop_back();
-      position_[heap_[i].key] = i;
+      position_[heap_[i].key] = static_cast<Index>(i);
       if (i > 0 && before(heap_[i], heap_[(i - 1) / arity])) sift_up(i);
       else sift_down(i);
     } else {
@@ -191,10 +194,10 @@ class Mutable_priority_queue {
       const std::size_t parent = (i - 1) / arity;
       if (!before(moving, heap_[parent])) break;
       heap_[i] = std::move(heap_[parent]);
-      position_[heap_[i].key] = i;
+      position_[heap_[i].key] = static_cast<Index>(i);
       i = parent;
     }
-    position_[moving.key] = i;
+    position_[moving.key] = static_cast<Index>(i);
     heap_[i] = std::move(moving);
   }
 
@@ -210,16 +213,16 @@ class Mutable_priority_queue {
         if (before(heap_[c], heap_[best])) best = c;
       if (!before(heap_[best], moving)) break;
       heap_[i] = std::move(heap_[best]);
-      position_[heap_[i].key] = i;
+      position_[heap_[i].key] = static_cast<Index>(i);
       i = best;
     }
-    position_[moving.key] = i;
+    position_[moving.key] = static_cast<Index>(i);
     heap_[i] = std::move(moving);
   }
 
   [[no_unique_address]] Compare compare_;
   std::vector<Entry> heap_;
-  std::vector<std::size_t> position_;  // key → index in heap_, or absent
+  std::vector<Index> position_;  // key → index in heap_, or absent
 };
 
 } // namespace genmesh

@@ -337,7 +337,7 @@ class Collapser {
     const double deg = std::clamp(o_.max_normal_deviation, 0.0, 180.0);
     cos_max_ = std::max(0.0, std::cos(deg * std::numbers::pi / 180.0));
     cos_min_angle_ = o_.min_angle > 0 ? std::cos(std::min(o_.min_angle, 60.0) * std::numbers::pi / 180.0) : 1.0;
-    queue_ = Mutable_priority_queue<Priority>(eb);
+    queue_ = Queue(eb);
     queue_.reserve(eb);
     Placement pl;
     for (const E e : edges(g_))
@@ -582,16 +582,26 @@ class Collapser {
   // The live faces' slots are laid out in Morton order of their boxes'
   // centres (cells of the grid), so that the faces of a cell sit together
   // in memory: a query reads a few runs of slots instead of scattered ones.
-  // Read from the slots alone (their corners are current), not the mesh.
+  // Read from the slots alone (their corners are current), not the mesh;
+  // the slots are compacted and permuted in place (a copy of them was the
+  // largest transient of the run).
   void build_grid() {
-    double sum = 0;
-    std::size_t n = 0;
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    grid_.reset(1.0, 0); // frees the old cells first
+    std::size_t live = 0;
     for (std::size_t s = 0; s < slot_.size(); ++s) {
       if (!slot_[s].alive()) {
         slot_of_[slot_face_[s]] = no_slot;
         continue;
       }
+      slot_[live] = slot_[s];
+      slot_face_[live++] = slot_face_[s];
+    }
+    slot_.resize(live);
+    slot_face_.resize(live);
+    double sum = 0;
+    std::size_t n = 0;
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    for (std::size_t s = 0; s < slot_.size(); ++s) {
       const auto t = slot_triangle(s);
       sum += (t.p[1] - t.p[0]).norm() + (t.p[2] - t.p[1]).norm() + (t.p[0] - t.p[2]).norm();
       n += 3;
@@ -600,29 +610,39 @@ class Collapser {
     const double m = n > 0 ? sum / static_cast<double>(n) : 0.0;
     const double cell = m > 0 ? 4.0 * m : 1.0;
     grid_.reset(cell, faces_);
-    order_.clear();
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> order;
+    order.reserve(slot_.size());
     for (std::size_t s = 0; s < slot_.size(); ++s) {
-      if (!slot_[s].alive()) continue;
       const auto t = slot_triangle(s);
       const Eigen::Vector3d c = ((t.p[0] + t.p[1] + t.p[2]) / 3.0 - lo) / cell;
-      order_.push_back({morton(c), static_cast<std::uint32_t>(s)});
+      order.push_back({morton(c), static_cast<std::uint32_t>(s)});
     }
-    std::sort(order_.begin(), order_.end());
-    std::vector<Face_slot> slots(order_.size());
-    std::vector<std::uint32_t> faces(order_.size());
-    for (std::size_t s = 0; s < order_.size(); ++s) {
-      const std::uint32_t old = order_[s].second;
-      slots[s] = slot_[old];
-      faces[s] = slot_face_[old];
-      slot_of_[faces[s]] = static_cast<std::uint32_t>(s);
+    std::sort(order.begin(), order.end());
+    // Slot s takes the slot order[s] had: follow each cycle of the
+    // permutation, marking placed slots by order[s].second = s.
+    for (std::size_t s = 0; s < order.size(); ++s) {
+      if (order[s].second == s) continue;
+      const Face_slot first = slot_[s];
+      const std::uint32_t first_face = slot_face_[s];
+      std::size_t j = s;
+      for (;;) {
+        const std::size_t k = order[j].second;
+        order[j].second = static_cast<std::uint32_t>(j);
+        if (k == s) {
+          slot_[j] = first;
+          slot_face_[j] = first_face;
+          break;
+        }
+        slot_[j] = slot_[k];
+        slot_face_[j] = slot_face_[k];
+        j = k;
+      }
     }
-    slot_ = std::move(slots);
-    slot_face_ = std::move(faces);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(order);
     for (std::size_t s = 0; s < slot_.size(); ++s) {
-      const auto t = slot_triangle(s);
-      grid_.insert(static_cast<std::uint32_t>(s), Box::of(t.p[0], t.p[1], t.p[2]));
+      slot_of_[slot_face_[s]] = static_cast<std::uint32_t>(s);
+      grid_.insert(static_cast<std::uint32_t>(s), slot_[s].box());
     }
-    std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(order_);
     grid_faces_ = faces_;
   }
 
@@ -650,9 +670,9 @@ class Collapser {
         const std::uint32_t is = static_cast<std::uint32_t>(vi(source(x, g_))),
                             iq = static_cast<std::uint32_t>(vi(q)),
                             iw = static_cast<std::uint32_t>(vi(target(next(x, g_), g_)));
-        const Box b = Box::of(pos_[is], pos_[iq], pos_[iw]);
-        slot_[sf].set(b, {is, iq, iw});
-        if (!rebuild) grid_.insert(static_cast<std::uint32_t>(sf), b);
+        const Box old = slot_[sf].box();
+        slot_[sf].set(Box::of(pos_[is], pos_[iq], pos_[iw]), {is, iq, iw});
+        if (!rebuild) grid_.move(static_cast<std::uint32_t>(sf), old, slot_[sf].box());
       }
       x = opposite(next(x, g_), g_);
     } while (x != start);
@@ -667,10 +687,6 @@ class Collapser {
     // The faces around p and q but the two of the edge: the new ones, their
     // corners from the walk (no slot read: p's and q's neighbourhoods are in
     // cache from the fold-over test).
-    if (stamp_ring_ > 0xF0000000u) { // before the stamps wrap
-      for (auto& x : slot_) x.seen = 0;
-      stamp_ring_ = 0;
-    }
     fresh_.clear();
     for (const V v : {source(h, g_), target(h, g_)}) {
       const H start = halfedge(v, g_);
@@ -694,7 +710,8 @@ class Collapser {
     // Against the live faces near the new ones (one query for the union of
     // their boxes; a candidate is tested exactly against each new face whose
     // box its box meets; faces around p or q are skipped: their corners say
-    // so). slot_.seen marks the candidates seen.
+    // so). A face listed in several of the query's cells is tested in the
+    // first one its box's cells share with the query's (Face_grid::first_shared).
     fresh_box_.resize(fresh_.size());
     Box all = Box::of(fresh_[0].p[0], fresh_[0].p[1], fresh_[0].p[2]);
     for (std::size_t i = 0; i < fresh_.size(); ++i) {
@@ -702,18 +719,32 @@ class Collapser {
       all.lo = all.lo.cwiseMin(fresh_box_[i].lo);
       all.hi = all.hi.cwiseMax(fresh_box_[i].hi);
     }
-    const std::uint32_t query = ++stamp_ring_;
-    bool hit = false;
-    grid_.query(all, [&](std::span<const std::uint32_t> cell) {
+    // Two passes: the slots pick the candidates (asking for their corners'
+    // points as they go), then the tests read the points, whose cache misses
+    // have overlapped by then.
+    candidates_.clear();
+    grid_.query(all, [&](Face_grid::Cell at, const Face_grid::Range& range, std::vector<std::uint32_t>& cell) {
       // Nearly every slot read is a cache miss: ask for it a few faces ahead.
+      // Entries of dead faces, and of faces that have left the cell, are
+      // dropped on the way (they were half of the entries read).
       constexpr std::size_t ahead = 8;
-      for (std::size_t k = 0; k < std::min(ahead, cell.size()); ++k) prefetch(&slot_[cell[k]]);
-      for (std::size_t k = 0; k < cell.size() && !hit; ++k) {
-        if (k + ahead < cell.size()) prefetch(&slot_[cell[k + ahead]]);
-        test_candidate(cell[k], ip, iq, query, all, hit);
+      const std::size_t n = cell.size();
+      for (std::size_t k = 0; k < std::min(ahead, n); ++k) prefetch(&slot_[cell[k]]);
+      std::size_t kept = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        if (k + ahead < n) prefetch(&slot_[cell[k + ahead]]);
+        const std::uint32_t f = cell[k];
+        if (pick_candidate(f, ip, iq, at, range, all)) cell[kept++] = f;
       }
+      cell.resize(kept);
     });
-    if (hit) return false;
+    for (const auto& [f, mask] : candidates_) {
+      const Mesh_triangle<std::uint32_t> u = slot_triangle(f);
+      for (std::size_t i = 0; i < fresh_.size(); ++i)
+        if ((i >= 64 || (mask >> i) & 1u) && slot_[f].overlaps(fresh_box_[i]) && !separated(i, u) &&
+            exact_test(fresh_[i], u))
+          return false;
+    }
     return true;
   }
 
@@ -723,28 +754,26 @@ class Collapser {
 #endif
   }
 
-  // The exact test of candidate face f against the new faces (a no-op for a
-  // dead face, one around p or q, or one seen in this query already).
-  void test_candidate(std::uint32_t f, std::uint32_t ip, std::uint32_t iq, std::uint32_t query, const Box& all,
-                      bool& hit) {
-    {
-      Face_slot& sl = slot_[f];
-      if (!sl.alive() || sl.seen == query) return;
-      sl.seen = query;
-      for (const std::uint32_t v : sl.v)
-        if (v == ip || v == iq) return;
-      if (!sl.overlaps(all)) return;
-      bool built = false;
-      Mesh_triangle<std::uint32_t> u;
-      for (std::size_t i = 0; i < fresh_.size() && !hit; ++i) {
-        if (!sl.overlaps(fresh_box_[i])) continue;
-        if (!built) {
-          u = slot_triangle(f);
-          built = true;
-        }
-        if (!separated(i, u) && exact_test(fresh_[i], u)) hit = true;
-      }
-    }
+  // Lists candidate face f, met in cell `at` of a query of cells `range`,
+  // with the new faces whose boxes its box meets (bit i: new face i; new
+  // faces from the 64th on are always tested), unless it is dead, around p
+  // or q, meets none, or is met in an earlier cell of the query. False
+  // when the cell's entry is stale: f is dead or its box has left the cell.
+  bool pick_candidate(std::uint32_t f, std::uint32_t ip, std::uint32_t iq, Face_grid::Cell at,
+                      const Face_grid::Range& range, const Box& all) {
+    const Face_slot& sl = slot_[f];
+    if (!sl.alive()) return false;
+    if (!sl.overlaps(all)) return Face_grid::covers(grid_.range_of(sl.box()), at);
+    for (const std::uint32_t v : sl.v)
+      if (v == ip || v == iq) return true;
+    if (!Face_grid::first_shared(grid_.range_of(sl.box()), range, at)) return true;
+    std::uint64_t mask = 0;
+    for (std::size_t i = 0; i < std::min<std::size_t>(fresh_.size(), 64); ++i)
+      if (sl.overlaps(fresh_box_[i])) mask |= std::uint64_t{1} << i;
+    if (mask == 0 && fresh_.size() <= 64) return true;
+    for (const std::uint32_t v : sl.v) prefetch(&pos_[v]);
+    candidates_.push_back({f, mask});
+    return true;
   }
 
   // faces_intersect, counted.
@@ -1089,13 +1118,16 @@ class Collapser {
   bool features_ = false;
   // The self-intersection guard: faces by index, alive or not, stamps, grid.
   // Per face: its box (float, rounded outwards: half the memory traffic of
-  // the query loop), the stamp of the last test that saw it, its corners
+  // the query loop; the grid lists the face in the cells of this box), its corners
   // (read by a candidate's exact test without walking the mesh; v[0] ==
   // dead once it is gone).
   struct Face_slot {
     float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     static constexpr std::uint32_t dead = ~std::uint32_t{0};
-    std::uint32_t seen = 0, v[3] = {dead, 0, 0};
+    std::uint32_t v[3] = {dead, 0, 0};
+    Box box() const {
+      return {Eigen::Vector3d(lo[0], lo[1], lo[2]), Eigen::Vector3d(hi[0], hi[1], hi[2])};
+    }
     bool alive() const { return v[0] != dead; }
     void set(const Box& b, const std::array<std::uint32_t, 3>& ids) {
       v[0] = ids[0];
@@ -1118,18 +1150,19 @@ class Collapser {
   static constexpr std::uint32_t no_slot = ~std::uint32_t{0};
   std::vector<std::uint32_t> slot_of_; // by face index; no_slot once dead
   std::vector<std::uint32_t> slot_face_; // by slot: its face index
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> order_;
-  std::uint32_t stamp_ring_ = 0;
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
   std::vector<H> around_;           // the survivor's incoming halfedges
   std::vector<Box> fresh_box_;
+  std::vector<std::pair<std::uint32_t, std::uint64_t>> candidates_; // slot, new faces its box meets
   std::vector<Fresh_plane> fresh_plane_;
   std::size_t exact_tests_ = 0; // faces_intersect calls (the filters decided the rest)
   Face_grid grid_;
   std::size_t grid_faces_ = 0;
   std::vector<std::uint8_t> feature_, on_line_;
   std::vector<E> edesc_;
-  Mutable_priority_queue<Priority> queue_;
+  // 32-bit positions: edge indices fit (the mesh's own indices are 32-bit).
+  using Queue = Mutable_priority_queue<Priority, std::less<Priority>, std::uint32_t>;
+  Queue queue_;
   // Memoryless policies: the profile's scratch, and the collapse count at
   // which each edge was last requeued.
   std::vector<std::array<std::uint32_t, 2>> border_keys_;

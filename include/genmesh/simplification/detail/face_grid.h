@@ -3,12 +3,14 @@
 //
 // A uniform grid of cubic cells, stored sparsely (cell key → face ids). A
 // face is listed in every cell its box overlaps. Entries are never removed:
-// a face that changed is inserted again with its new box — into the cells
-// of its new cell range that its last range did not cover, so that a face
-// re-inserted many times is not listed many times — and queries skip what
-// no longer overlaps (the caller checks the current box). An entry may be
-// stale, but a face is never missing from a cell its current box overlaps. The caller rebuilds the grid with a larger cell when faces have
-// grown (simplify: whenever the face count halves).
+// a face that changed is inserted again with its new box (move()) into the
+// cells of its new range that its old box's range did not cover — the
+// caller keeps the box a face was last inserted with, so the grid keeps no
+// per-face data — and queries skip what no longer overlaps (the caller
+// checks the current box). An entry may be stale, but a face is never
+// missing from a cell its current box overlaps. The caller rebuilds the
+// grid with a larger cell when faces have grown (simplify: whenever the
+// face count halves).
 #pragma once
 
 #include <Eigen/Core>
@@ -35,42 +37,30 @@ struct Box {
 
 class Face_grid {
  public:
+  // Cells of size `cell`; room for the cells of about expected_faces faces
+  // (a cell holds tens of faces).
   void reset(double cell, std::size_t expected_faces) {
     inv_ = cell > 0 ? 1.0 / cell : 1.0;
-    cells_.clear();
-    cells_.reserve(expected_faces);
-    for (auto& r : range_) r = Range{};
+    cells_ = {};
+    cells_.reserve(expected_faces / 16);
   }
 
+  // Lists f in every cell b overlaps.
   void insert(std::uint32_t f, const Box& b) {
-    if (f >= range_.size()) range_.resize(f + 1);
-    const Range n = range_of(b), old = range_[f];
-    if (old.contains(n)) return;
+    for_range(range_of(b), [&](std::int64_t x, std::int64_t y, std::int64_t z) { cells_[key(x, y, z)].push_back(f); });
+  }
+
+  // f, listed in the cells of old, now has box b: lists it in the cells of
+  // b that old's cells do not cover.
+  void move(std::uint32_t f, const Box& old, const Box& b) {
+    const Range o = range_of(old), n = range_of(b);
+    if (o.contains(n)) return;
     for_range(n, [&](std::int64_t x, std::int64_t y, std::int64_t z) {
-      if (!old.contains(x, y, z)) cells_[key(x, y, z)].push_back(f);
-    });
-    range_[f] = n;
-  }
-
-  // Calls visit(cell) for every non-empty cell b overlaps, with the span of
-  // the faces listed there (a face may come in several cells, and may no
-  // longer overlap b): the caller walks it, prefetching ahead.
-  template <class Visit>
-  void query(const Box& b, Visit&& visit) const {
-    for_range(range_of(b), [&](std::int64_t x, std::int64_t y, std::int64_t z) {
-      const auto it = cells_.find(key(x, y, z));
-      if (it == cells_.end()) return;
-      visit(std::span<const std::uint32_t>(it->second));
+      if (!o.contains(x, y, z)) cells_[key(x, y, z)].push_back(f);
     });
   }
 
- private:
-  // 16 bits an axis, clamped (clamping keeps overlaps: a mesh wider than
-  // 65,536 cells only gets longer lists in its outer cells).
-  static constexpr std::int64_t half = std::int64_t{1} << 15;
-
-  // An inclusive range of cells (empty by default); 12 bytes, as the
-  // per-face array is read at random on every insertion.
+  // An inclusive range of cells (empty by default), 16 bits an axis.
   struct Range {
     std::uint16_t x0 = 1, y0 = 1, z0 = 1, x1 = 0, y1 = 0, z1 = 0;
     bool contains(std::int64_t x, std::int64_t y, std::int64_t z) const {
@@ -80,10 +70,44 @@ class Face_grid {
       return x0 <= o.x0 && o.x1 <= x1 && y0 <= o.y0 && o.y1 <= y1 && z0 <= o.z0 && o.z1 <= z1;
     }
   };
+  struct Cell {
+    std::uint16_t x, y, z;
+  };
+
+  // Is c the lowest cell (in x, y and z) that ranges a and b share? A face
+  // whose box overlaps a query's box is met in every cell of the query that
+  // its box's range covers; the query takes it in this one only, instead
+  // of marking the faces it has seen.
+  static bool first_shared(const Range& a, const Range& b, Cell c) {
+    return c.x == std::max(a.x0, b.x0) && c.y == std::max(a.y0, b.y0) && c.z == std::max(a.z0, b.z0);
+  }
+  static bool covers(const Range& a, Cell c) { return a.contains(c.x, c.y, c.z); }
+
+  // Calls visit(cell, range, faces) for every non-empty cell b overlaps,
+  // with b's range and the list of the faces listed there (a face may come
+  // in several cells, and may no longer overlap b): the caller walks it,
+  // prefetching ahead, and may drop the entries of faces that are gone or
+  // whose box no longer reaches the cell (never others: a face must stay
+  // listed in every cell its box's range covers).
+  template <class Visit>
+  void query(const Box& b, Visit&& visit) {
+    const Range r = range_of(b);
+    for_range(r, [&](std::int64_t x, std::int64_t y, std::int64_t z) {
+      const auto it = cells_.find(key(x, y, z));
+      if (it == cells_.end()) return;
+      visit(Cell{static_cast<std::uint16_t>(x), static_cast<std::uint16_t>(y), static_cast<std::uint16_t>(z)}, r,
+            it->second);
+    });
+  }
 
   Range range_of(const Box& b) const {
     return {coord(b.lo.x()), coord(b.lo.y()), coord(b.lo.z()), coord(b.hi.x()), coord(b.hi.y()), coord(b.hi.z())};
   }
+
+  private:
+  // 16 bits an axis, clamped (clamping keeps overlaps: a mesh wider than
+  // 65,536 cells only gets longer lists in its outer cells).
+  static constexpr std::int64_t half = std::int64_t{1} << 15;
 
   static std::uint64_t key(std::int64_t x, std::int64_t y, std::int64_t z) {
     return (static_cast<std::uint64_t>(x) << 32) | (static_cast<std::uint64_t>(y) << 16) | static_cast<std::uint64_t>(z);
@@ -103,7 +127,6 @@ class Face_grid {
 
   double inv_ = 1.0;
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
-  std::vector<Range> range_; // by face: the cells it was last inserted into
 };
 
 } // namespace genmesh::detail::simplification
