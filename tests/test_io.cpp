@@ -391,6 +391,15 @@ void check_binary_ply(const char* count_name, const char* index_name) {
   EXPECT_EQ(s.face_size(1), 4u);
   EXPECT_EQ(s.face(1)[1], 2u);
   EXPECT_EQ(s.face(1)[3], 1u);
+  // The lone nx and red (no full group) are attributes of their own names,
+  // read past the vertex list.
+  ASSERT_EQ(s.vertex_attributes.size(), 2u);
+  EXPECT_EQ(s.vertex_attributes[0].name, "nx");
+  EXPECT_EQ(s.vertex_attributes[0].type, genmesh::Scalar_type::float64);
+  EXPECT_EQ(s.vertex_attributes[0].values, std::vector<double>(4, 0.5));
+  EXPECT_EQ(s.vertex_attributes[1].name, "red");
+  EXPECT_EQ(s.vertex_attributes[1].type, genmesh::Scalar_type::uint8);
+  EXPECT_EQ(s.vertex_attributes[1].values, std::vector<double>(4, 7.0));
 }
 } // namespace
 
