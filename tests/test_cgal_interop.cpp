@@ -14,6 +14,7 @@
 #include <genmesh/concepts.h>
 #include <genmesh/generators.h>
 #include <genmesh/mesh_check.h>
+#include <genmesh/properties.h>
 #include <genmesh/remeshing.h>
 #include <genmesh/simplification.h>
 #include <genmesh/subdivision.h>
@@ -1134,6 +1135,48 @@ TEST(CgalToGenmesh, SimplifyAndRemeshOnOpenMeshAndPolyhedronEqualHalfedgeMesh) {
     EXPECT_EQ(remeshed<Om_tri_d>(soup), r);
     EXPECT_EQ(remeshed<Polyhedron_with_ids>(soup), r);
   }
+}
+
+// Attribute_quadrics over a vertex property map (a scratch property: the
+// generic storage on these two) on an icosphere painted red above the
+// equator and blue below: the survivors' points and written colours, sorted.
+template <class G>
+std::vector<std::array<double, 6>> simplified_with_colour(const genmesh::Polygon_soup& soup) {
+  G g;
+  genmesh::build_mesh(soup, g);
+  auto colour = genmesh::scratch_property<Eigen::Vector3d>(genmesh::vertex_index, g, Eigen::Vector3d::Zero());
+  auto pm = get(genmesh::vertex_point, g);
+  using P = genmesh::point_t<G>;
+  for (auto v : vertices(g))
+    colour[v] = genmesh::to_eigen(P(get(pm, v))).z() > 0 ? Eigen::Vector3d(1, 0, 0) : Eigen::Vector3d(0, 0, 1);
+  const auto r = genmesh::simplify(g, genmesh::Simplification_options<genmesh::Attribute_quadrics<G>>{
+                                          .target_ratio = 0.2, .policy = {.attributes = {genmesh::vertex_attribute(colour, 0.2)}}});
+  EXPECT_EQ(r.stop_reason, genmesh::Stop_reason::target_faces);
+  EXPECT_TRUE(genmesh::check_mesh(g).valid);
+  std::vector<std::array<double, 6>> out;
+  for (auto v : vertices(g)) {
+    const Eigen::Vector3d p = genmesh::to_eigen(P(get(pm, v)));
+    const Eigen::Vector3d c = colour[v];
+    out.push_back({p.x(), p.y(), p.z(), c.x(), c.y(), c.z()});
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST(CgalToGenmesh, AttributeQuadricsOnOpenMeshAndPolyhedronEqualHalfedgeMesh) {
+  const genmesh::Polygon_soup sphere = genmesh::make_icosphere(3);
+  const auto expected = simplified_with_colour<genmesh::Halfedge_mesh<>>(sphere);
+  ASSERT_LT(expected.size(), sphere.num_points());
+  double worst = 0; // survivors away from the equator keep their pure colour
+  for (const auto& x : expected)
+    if (std::abs(x[2]) > 0.25)
+      worst = std::max(worst, (Eigen::Vector3d(x[3], x[4], x[5]) -
+                               (x[2] > 0 ? Eigen::Vector3d(1, 0, 0) : Eigen::Vector3d(0, 0, 1)))
+                                  .cwiseAbs()
+                                  .maxCoeff());
+  EXPECT_LT(worst, 0.05);
+  EXPECT_EQ(simplified_with_colour<Om_tri_d>(sphere), expected);
+  EXPECT_EQ(simplified_with_colour<Polyhedron_with_ids>(sphere), expected);
 }
 
 } // namespace

@@ -3,6 +3,9 @@
 // whose counts equal CGAL's on the same file, on every backend.
 #include "backends.h"
 
+#include <genmesh/generators.h>
+#include <genmesh/io.h>
+
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -231,6 +234,68 @@ TEST(Cli, FailedConvertLeavesExistingOutputIntact) {
   Cli_run nodir = genmesh("convert " + real_mesh("cube.off") + " " + tmp_path("no/such/dir/x.off"));
   EXPECT_EQ(nodir.exit_code, 2);
   EXPECT_NE(nodir.err.find("x.off"), std::string::npos) << nodir.err;
+}
+
+// simplify --attributes: a flat grid coloured red below a slanted line and
+// blue above (uchar colours in a PLY). With the colour in the quadrics the
+// seam keeps narrow triangles (the faces whose corners differ in colour
+// cover far less area than with plane quadrics alone, which see no cost on
+// the flat grid); the output carries the colours with their type; every
+// backend writes the same file; --json names the attributes used; a name the
+// file lacks or another policy is refused.
+TEST(Cli, SimplifyWithAttributesKeepsAColourSeam) {
+  genmesh::Polygon_soup grid = genmesh::make_grid(24, 24);
+  genmesh::Soup_attribute colour{"color", {"red", "green", "blue"}, genmesh::Scalar_type::uint8, {}};
+  for (const auto& p : grid.points) {
+    const bool above = p.y() > 0.3 + 0.35 * p.x();
+    colour.values.insert(colour.values.end(), {above ? 0.0 : 255.0, 0.0, above ? 255.0 : 0.0});
+  }
+  grid.vertex_attributes.push_back(colour);
+  const std::string in = tmp_path("seam.ply");
+  genmesh::write_soup(in, grid);
+  // Area of the output faces whose corners are not all of one colour.
+  auto mixed_area = [](const std::string& file) {
+    const genmesh::Polygon_soup s = genmesh::read_soup(file);
+    const genmesh::Soup_attribute* c = s.vertex_attribute("color");
+    if (!c || c->type != genmesh::Scalar_type::uint8) throw std::runtime_error("no uchar colour in " + file);
+    double area = 0;
+    for (std::size_t f = 0; f < s.num_faces(); ++f) {
+      const auto v = s.face(f);
+      const double r0 = c->of(v[0])[0], r1 = c->of(v[1])[0], r2 = c->of(v[2])[0];
+      if (r0 != r1 || r0 != r2)
+        area += 0.5 * (s.points[v[1]] - s.points[v[0]]).cross(s.points[v[2]] - s.points[v[0]]).norm();
+    }
+    return area;
+  };
+  std::string first;
+  for (const char* backend : {"halfedge", "surface-mesh", "incidence"}) {
+    SCOPED_TRACE(backend);
+    const std::string out = tmp_path(std::string("seam_") + backend + ".ply");
+    Cli_run r = genmesh("simplify " + in + " " + out + " --ratio 0.15 --json --attributes color=0.5 --backend " + backend);
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("\"attributes\":[{\"name\":\"color\",\"width\":3,\"weight\":0.5}]"), std::string::npos) << r.out;
+    EXPECT_NE(read_file(out).find("property uchar red"), std::string::npos);
+    if (first.empty()) first = read_file(out);
+    else EXPECT_EQ(read_file(out), first);
+  }
+  const std::string plain = tmp_path("seam_plain.ply");
+  Cli_run p = genmesh("simplify " + in + " " + plain + " --ratio 0.15 --json");
+  ASSERT_EQ(p.exit_code, 0) << p.out << p.err;
+  EXPECT_NE(p.out.find("\"attributes\":[{\"name\":\"color\",\"width\":3,\"weight\":0}]"), std::string::npos) << p.out;
+  const double with = mixed_area(tmp_path("seam_halfedge.ply")), without = mixed_area(plain);
+  std::printf("mixed-colour area: %.4g with attributes, %.4g without\n", with, without);
+  EXPECT_LT(with, 0.5 * without);
+  // The whole file's attributes at one weight: the same as naming the only one.
+  ASSERT_EQ(genmesh("simplify " + in + " " + tmp_path("seam_all.ply") + " --ratio 0.15 --attributes 0.5").exit_code, 0);
+  EXPECT_EQ(read_file(tmp_path("seam_all.ply")), first);
+
+  Cli_run missing = genmesh("simplify " + in + " " + tmp_path("x.ply") + " --ratio 0.5 --attributes normal=1");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("'normal', which the file does not have (its attributes: color)"), std::string::npos)
+      << missing.err;
+  EXPECT_EQ(genmesh("simplify " + in + " " + tmp_path("x.ply") + " --ratio 0.5 --attributes 1 --policy length").exit_code, 2);
+  EXPECT_EQ(genmesh("simplify " + in + " " + tmp_path("x.ply") + " --ratio 0.5 --attributes color=").exit_code, 2);
+  EXPECT_EQ(genmesh("simplify " + in + " " + tmp_path("x.ply") + " --ratio 0.5 --attributes -1").exit_code, 2);
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 #include <genmesh/generators.h>
 #include <genmesh/io.h>
 #include <genmesh/local_operations.h>
+#include <genmesh/properties.h>
 
 #include "backends.h"
 #include "../fuzz/genmesh_fuzz.h"
@@ -14,7 +15,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <bit>
+#include <cstdint>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -388,6 +391,15 @@ void check_binary_ply(const char* count_name, const char* index_name) {
   EXPECT_EQ(s.face_size(1), 4u);
   EXPECT_EQ(s.face(1)[1], 2u);
   EXPECT_EQ(s.face(1)[3], 1u);
+  // The lone nx and red (no full group) are attributes of their own names,
+  // read past the vertex list.
+  ASSERT_EQ(s.vertex_attributes.size(), 2u);
+  EXPECT_EQ(s.vertex_attributes[0].name, "nx");
+  EXPECT_EQ(s.vertex_attributes[0].type, genmesh::Scalar_type::float64);
+  EXPECT_EQ(s.vertex_attributes[0].values, std::vector<double>(4, 0.5));
+  EXPECT_EQ(s.vertex_attributes[1].name, "red");
+  EXPECT_EQ(s.vertex_attributes[1].type, genmesh::Scalar_type::uint8);
+  EXPECT_EQ(s.vertex_attributes[1].values, std::vector<double>(4, 7.0));
 }
 } // namespace
 
@@ -975,6 +987,170 @@ TEST(IoRealMeshes, EveryOffFileHasCgalCounts) {
   EXPECT_GE(n, 100u);
 }
 
+// ---- per-vertex attributes ------------------------------------------------------------
+
+namespace {
+std::vector<std::string> components(const genmesh::Soup_attribute& a) { return a.components; }
+} // namespace
+
+// PLY vertex properties beyond x y z become named channels (colour, normal,
+// texture coordinates grouped; others alone; lists skipped), keep their
+// types, and are written back: ascii and binary PLY give the same soup, OFF
+// keeps what it has a place for (colour, normal, texture coordinates).
+TEST(IoAttributes, PlyChannelsRoundTrip) {
+  const std::string p = write_file("attributes.ply",
+                                   "ply\nformat ascii 1.0\n"
+                                   "element vertex 3\n"
+                                   "property float quality\n"
+                                   "property double x\nproperty double y\nproperty double z\n"
+                                   "property float nx\nproperty float ny\nproperty float nz\n"
+                                   "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n"
+                                   "property list uchar int tags\n"
+                                   "property double u\nproperty double v\n"
+                                   "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                                   "0.5 0 0 0 0 0 1 255 0 0 255 2 7 8 0.25 0.75\n"
+                                   "1.5 1 0 0 0 0 1 0 255 0 128 0 1 0\n"
+                                   "2.5 0 1 0 0 0 1 0 0 255 0 1 9 0.125 1\n"
+                                   "3 0 1 2\n");
+  const Polygon_soup s = read_soup(p);
+  ASSERT_EQ(s.num_points(), 3u);
+  EXPECT_EQ(s.points[1], Eigen::Vector3d(1, 0, 0));
+  ASSERT_EQ(s.vertex_attributes.size(), 4u);
+  const auto& quality = s.vertex_attributes[0];
+  const auto& normal = s.vertex_attributes[1];
+  const auto& colour = s.vertex_attributes[2];
+  const auto& uv = s.vertex_attributes[3];
+  EXPECT_EQ(quality.name, "quality");
+  EXPECT_EQ(quality.type, genmesh::Scalar_type::float32);
+  EXPECT_EQ(quality.values, (std::vector<double>{0.5, 1.5, 2.5}));
+  EXPECT_EQ(normal.name, "normal");
+  EXPECT_EQ(components(normal), (std::vector<std::string>{"nx", "ny", "nz"}));
+  EXPECT_EQ(colour.name, "color");
+  EXPECT_EQ(colour.type, genmesh::Scalar_type::uint8);
+  EXPECT_EQ(components(colour), (std::vector<std::string>{"red", "green", "blue", "alpha"}));
+  EXPECT_EQ(std::vector<double>(colour.of(1).begin(), colour.of(1).end()), (std::vector<double>{0, 255, 0, 128}));
+  EXPECT_EQ(uv.name, "texcoord");
+  EXPECT_EQ(std::vector<double>(uv.of(2).begin(), uv.of(2).end()), (std::vector<double>{0.125, 1}));
+  ASSERT_NE(s.vertex_attribute("color"), nullptr);
+  EXPECT_EQ(s.vertex_attribute("colour"), nullptr);
+
+  for (const bool binary : {false, true}) {
+    const std::string q = genmesh_test::tmp_path(binary ? "attributes_bin.ply" : "attributes_out.ply");
+    write_soup(q, s, {.binary = binary});
+    EXPECT_EQ(read_soup(q), s) << (binary ? "binary" : "ascii");
+    if (binary) EXPECT_NE(read_bytes(q).find("property uchar alpha"), std::string::npos);
+  }
+  // OFF: STCNOFF with normal, colour and texture coordinates; no quality.
+  const std::string o = genmesh_test::tmp_path("attributes_out.off");
+  write_soup(o, s);
+  EXPECT_EQ(read_bytes(o).substr(0, 8), "STCNOFF\n");
+  const Polygon_soup t = read_soup(o);
+  ASSERT_EQ(t.vertex_attributes.size(), 3u);
+  EXPECT_EQ(t.vertex_attribute("normal")->values, normal.values);
+  EXPECT_EQ(t.vertex_attribute("color")->values, colour.values);
+  EXPECT_EQ(t.vertex_attribute("color")->type, genmesh::Scalar_type::uint8);
+  EXPECT_EQ(t.vertex_attribute("texcoord")->values, uv.values);
+  EXPECT_EQ(t.points, s.points);
+}
+
+// OFF variants: [ST][C][N]OFF extras in Geomview's order; colours as CGAL
+// reads them (3 or 4 values or none per line; float colours stay doubles).
+TEST(IoAttributes, OffVariants) {
+  const Polygon_soup s = read_soup(write_file("stcn.off",
+                                              "STCNOFF\n3 1 0\n"
+                                              "0 0 0  0 0 1  255 0 0 255  0 0\n"
+                                              "1 0 0  0 0 1  0 255 0 128  1 0 # comment\n"
+                                              "0 1 0  0 0 1  0 0 255 0  0 1\n"
+                                              "3 0 1 2\n"));
+  ASSERT_EQ(s.vertex_attributes.size(), 3u);
+  EXPECT_EQ(s.vertex_attributes[0].name, "normal");
+  EXPECT_EQ(s.vertex_attributes[1].name, "color");
+  EXPECT_EQ(s.vertex_attributes[1].width(), 4u);
+  EXPECT_EQ(s.vertex_attributes[1].type, genmesh::Scalar_type::uint8);
+  EXPECT_EQ(s.vertex_attributes[2].name, "texcoord");
+  EXPECT_EQ(s.vertex_attributes[2].values, (std::vector<double>{0, 0, 1, 0, 0, 1}));
+  const std::string o = genmesh_test::tmp_path("stcn_out.off");
+  write_soup(o, s);
+  EXPECT_EQ(read_soup(o), s);
+  const std::string q = genmesh_test::tmp_path("stcn_out.ply");
+  write_soup(q, s, {.binary = true});
+  EXPECT_EQ(read_soup(q).vertex_attribute("color")->values, s.vertex_attributes[1].values);
+
+  // Float colours, one line without colour (0 0 0), one without alpha (opaque).
+  const Polygon_soup c = read_soup(write_file("coff_float.off",
+                                              "COFF\n3 1 0\n0 0 0 0.5 0.25 1 0.5\n1 0 0\n0 1 0 1 1 1\n3 0 1 2\n"));
+  ASSERT_EQ(c.vertex_attributes.size(), 1u);
+  EXPECT_EQ(c.vertex_attributes[0].type, genmesh::Scalar_type::float64);
+  EXPECT_EQ(c.vertex_attributes[0].values, (std::vector<double>{0.5, 0.25, 1, 0.5, 0, 0, 0, 1, 1, 1, 1, 1}));
+  // NOFF: normals only.
+  const Polygon_soup n = read_soup(write_file("noff_attr.off", "NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 -1\n3 0 1 2\n"));
+  ASSERT_EQ(n.vertex_attributes.size(), 1u);
+  EXPECT_EQ(n.vertex_attributes[0].values, (std::vector<double>{0, 0, 1, 0, 0, 1, 0, 0, -1}));
+}
+
+// The real file with normals, colours and an integer id per vertex.
+TEST(IoAttributes, ColoredTetra) {
+  const Polygon_soup s = read_soup(genmesh_test::real_mesh("colored_tetra.ply"));
+  ASSERT_EQ(s.num_points(), 4u);
+  ASSERT_NE(s.vertex_attribute("normal"), nullptr);
+  ASSERT_NE(s.vertex_attribute("color"), nullptr);
+  ASSERT_NE(s.vertex_attribute("id"), nullptr);
+  EXPECT_EQ(s.vertex_attribute("color")->type, genmesh::Scalar_type::uint8);
+  EXPECT_EQ(s.vertex_attribute("id")->type, genmesh::Scalar_type::int32);
+  for (const double v : s.vertex_attribute("color")->values) EXPECT_TRUE(v >= 0 && v <= 255 && v == std::trunc(v));
+  const std::string q = genmesh_test::tmp_path("colored_tetra_out.ply");
+  write_soup(q, s);
+  EXPECT_EQ(read_soup(q), s);
+}
+
+TEST(IoAttributes, MalformedValuesAreErrorsNamingTheLine) {
+  const std::string h = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                        "property float z\nproperty uchar red\nproperty float nx\nelement face 1\n"
+                        "property list uchar int vertex_indices\nend_header\n";
+  expect_read_error("red_range.ply", h + "0 0 0 0 0\n1 0 0 300 0\n0 1 0 0 0\n3 0 1 2\n",
+                    {"malformed value of vertex property 'red': 300 is not a uchar (vertex 1)", 13, {}});
+  expect_read_error("red_frac.ply", h + "0 0 0 1.5 0\n1 0 0 3 0\n0 1 0 0 0\n3 0 1 2\n",
+                    {"'red': 1.5 is not a uchar", 12, {}});
+  expect_read_error("nx_nan.ply", h + "0 0 0 0 0\n1 0 0 0 0\n0 1 0 0 nan\n3 0 1 2\n",
+                    {"non-finite value of vertex property 'nx' (vertex 2)", 14, {}});
+  expect_read_error("nx_word.ply", h + "0 0 0 0 0\n1 0 0 0 up\n0 1 0 0 0\n3 0 1 2\n",
+                    {"malformed vertex property value: expected a number, found 'up'", 13, {}});
+  // Binary: the byte offset of the value.
+  const std::string bh = "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                         "property float z\nproperty float quality\nelement face 0\n"
+                         "property list uchar int vertex_indices\nend_header\n";
+  Bytes b;
+  b.text(bh).le(0.f).le(0.f).le(0.f).le(std::numeric_limits<float>::infinity());
+  expect_read_error("bquality.ply", b.s, {"non-finite value of vertex property 'quality' (vertex 0)", {}, bh.size() + 12});
+
+  const std::string off = "3 1 0\n";
+  expect_read_error("noff_short.off", "NOFF\n" + off + "0 0 0 0 0 1\n1 0 0 0 0\n0 1 0 0 0 1\n3 0 1 2\n",
+                    {"vertex 1 has no normal value 'nz' (the keyword 'NOFF' announces it)", 4, {}});
+  expect_read_error("coff_two.off", "COFF\n" + off + "0 0 0 1 0 0\n1 0 0 1 0\n0 1 0 1 0 0\n3 0 1 2\n",
+                    {"vertex 1 has 2 colour values (3 or 4 expected)", 4, {}});
+  expect_read_error("coff_word.off", "COFF\n" + off + "0 0 0 1 0 red\n1 0 0 1 0 0\n0 1 0 1 0 0\n3 0 1 2\n",
+                    {"malformed colour value: expected a number, found 'red'", 3, {}});
+  expect_read_error("stoff_inf.off", "STOFF\n" + off + "0 0 0 0 0\n1 0 0 inf 0\n0 1 0 0 1\n3 0 1 2\n",
+                    {"vertex 1 has a non-finite texture coordinate value", 4, {}});
+}
+
+// A channel that does not fit its soup is refused before the target changes.
+TEST(IoAttributes, WriterRefusesInconsistentChannels) {
+  Polygon_soup s = genmesh::make_tetrahedron();
+  s.vertex_attributes.push_back({"quality", {"quality"}, genmesh::Scalar_type::float32, {1, 2, 3}});
+  const std::string p = genmesh_test::tmp_path("bad_channel.ply");
+  write_soup(p, genmesh::make_tetrahedron());
+  const std::string before = read_bytes(p);
+  expect_io_error([&] { write_soup(p, s); }, p, {"attribute 'quality' has 3 values for 4 points", {}, {}});
+  s.vertex_attributes[0].values.push_back(std::numeric_limits<double>::quiet_NaN());
+  expect_io_error([&] { write_soup(p, s); }, p, {"point 3 has a non-finite 'quality' value", {}, {}});
+  EXPECT_EQ(read_bytes(p), before);
+  // add_point keeps channels the size of the points.
+  s.vertex_attributes[0].values.back() = 4;
+  s.add_point(2, 2, 2);
+  EXPECT_EQ(s.vertex_attributes[0].values.size(), 5u);
+}
+
 // ---- meshes ------------------------------------------------------------------------
 
 template <class G>
@@ -1054,4 +1230,39 @@ TYPED_TEST(IoMesh, MissingFile) {
   TypeParam g;
   const std::string p = genmesh_test::tmp_path("no_mesh_here.ply");
   expect_io_error([&] { genmesh::read_mesh(p, g); }, p, {"does not exist", {}, {}});
+}
+
+// A soup's channels go into vertex property maps of the mesh built from it
+// and come back out of the mesh, following the vertices: after collapses
+// (holes in the numbering) every point of to_soup(g) still has its colour.
+TYPED_TEST(IoMesh, AttributesFollowTheirVertices) {
+  Polygon_soup soup = genmesh::make_torus(8, 5, true);
+  genmesh::Soup_attribute colour{"color", {"red", "green", "blue"}, genmesh::Scalar_type::uint8, {}};
+  for (const auto& p : soup.points)
+    for (int k = 0; k < 3; ++k) colour.values.push_back(std::round(128 + 90 * p[k]));
+  soup.vertex_attributes.push_back(colour);
+  TypeParam g;
+  genmesh::build_mesh(soup, g);
+  auto map = genmesh::scratch_property<std::array<std::uint8_t, 3>>(genmesh::vertex_index, g);
+  genmesh::read_vertex_attribute(soup.vertex_attributes[0], g, map);
+  EXPECT_EQ(genmesh::make_soup_attribute(g, map, "color", {}, genmesh::Scalar_type::uint8), colour);
+  for (int k = 0; k < 5; ++k) {
+    auto e = *std::next(edges(g).begin(), 7 * k);
+    if (genmesh::can_collapse_edge(e, std::as_const(g))) genmesh::collapse_edge(e, g);
+  }
+  Polygon_soup out = genmesh::to_soup(g);
+  ASSERT_LT(out.num_points(), soup.num_points());
+  out.vertex_attributes.push_back(genmesh::make_soup_attribute(g, map, "color", {}, genmesh::Scalar_type::uint8));
+  EXPECT_EQ(out.vertex_attributes[0].components, colour.components);
+  for (std::size_t i = 0; i < out.num_points(); ++i)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(out.vertex_attributes[0].of(i)[static_cast<std::size_t>(k)], std::round(128 + 90 * out.points[i][k]));
+  const std::string p = genmesh_test::tmp_path("mesh_colours.ply");
+  write_soup(p, out);
+  EXPECT_EQ(read_soup(p), out);
+  // A map that cannot hold the channel's width.
+  TypeParam h;
+  genmesh::build_mesh(soup, h);
+  auto scalar_h = genmesh::scratch_property<double>(genmesh::vertex_index, h);
+  EXPECT_THROW(genmesh::read_vertex_attribute(soup.vertex_attributes[0], h, scalar_h), genmesh::invalid_input);
 }

@@ -8,7 +8,8 @@
 //                          [--creases FILE] [--backend B] [--json]
 //   genmesh simplify IN OUT (--faces N | --ratio R | --error E) [--features DEG]
 //                          [--policy quadric|probabilistic|lindstrom-turk|length]
-//                          [--boundary preserve|lock|free] [--backend B] [--json]
+//                          [--boundary preserve|lock|free] [--attributes W|NAME=W,...]
+//                          [--backend B] [--json]
 //   genmesh remesh IN OUT  [--edge-length L | --relative R] [--iterations N]
 //                          [--features DEG] [--adaptive MIN MAX ERR]
 //                          [--flips valence|delaunay] [--backend B] [--json]
@@ -137,6 +138,10 @@ const char* usage_text =
     "                     (a distance, relative to the bounding-box diagonal)\n"
     "  --policy P         simplify: quadric|probabilistic|lindstrom-turk|length (default quadric)\n"
     "                     --boundary for simplify: preserve|lock|free (default preserve)\n"
+    "  --attributes W | NAME=W[,NAME=W...]   simplify (quadric policy): the input's per-vertex\n"
+    "                     attributes (PLY vertex properties, COFF/NOFF/STOFF extras) in the\n"
+    "                     quadrics, every one at weight W or each named one at its W; the\n"
+    "                     output gets the survivors' optimal values\n"
     "  --features DEG     simplify: edges whose faces meet at DEG degrees or more are feature\n"
     "                     lines: collapses run along them, never across; corners stay\n"
     "                     remesh: edges sharper than DEG degrees are kept as feature lines\n"
@@ -167,6 +172,8 @@ struct Args {
   std::optional<double> ratio, error;
   std::string policy = "quadric";
   std::optional<double> features;  // simplify --features DEG
+  // simplify --attributes: (name, weight); the name "" stands for every attribute
+  std::vector<std::pair<std::string, double>> attribute_weights;
   bool boundary_given = false;
   std::size_t samples = 0;  // measure --samples
   // remesh (and --features)
@@ -203,10 +210,30 @@ double number_option(const std::string& option, const std::string& v, double lo,
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used != v.size() || !(x >= lo && x <= hi))
+  if (v.empty() || used != v.size() || !(x >= lo && x <= hi))
     throw usage_error(option + " takes a number from " + std::to_string(lo) + " to " + std::to_string(hi) +
                       ", got '" + v + "'");
   return x;
+}
+
+// simplify --attributes: "W" (every attribute at weight W) or
+// "NAME=W[,NAME=W...]"; a weight of 0 carries an attribute without using it.
+void parse_attribute_weights(const std::string& spec, std::vector<std::pair<std::string, double>>& out) {
+  if (spec.find('=') == std::string::npos) {
+    out.emplace_back("", number_option("--attributes", spec, 0, 1e300));
+    return;
+  }
+  std::size_t b = 0;
+  for (;;) {
+    const std::size_t e = std::min(spec.find(',', b), spec.size());
+    const std::string item = spec.substr(b, e - b);
+    const std::size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw usage_error("--attributes takes W or NAME=W[,NAME=W...], got '" + bounded(spec, 80) + "'");
+    out.emplace_back(item.substr(0, eq), number_option("--attributes " + item.substr(0, eq), item.substr(eq + 1), 0, 1e300));
+    if (e == spec.size()) break;
+    b = e + 1;
+  }
 }
 
 Args parse(int argc, char** argv) {
@@ -235,6 +262,9 @@ Args parse(int argc, char** argv) {
       else if (s == "--error") a.error = number_option(s, v, 0, 1e300);
       else if (s == "--policy") a.policy = v;
       else a.features = number_option(s, v, 0, 180);
+    } else if (s == "--attributes") {
+      if (i + 1 >= argc) throw usage_error("--attributes needs a value: W or NAME=W[,NAME=W...]");
+      parse_attribute_weights(argv[++i], a.attribute_weights);
     } else if (s == "--scheme" || s == "--levels" || s == "--boundary" || s == "--creases" ||
                s == "--max-file-size" || s == "--max-memory") {
       if (i + 1 >= argc) throw usage_error(s + " needs a value");
@@ -325,6 +355,8 @@ Args parse(int argc, char** argv) {
     if (!a.faces && !a.ratio && !a.error) throw usage_error("simplify needs --faces, --ratio or --error");
     if (a.policy != "quadric" && a.policy != "probabilistic" && a.policy != "length" && a.policy != "lindstrom-turk")
       throw usage_error("unknown policy '" + a.policy + "' (quadric|probabilistic|lindstrom-turk|length)");
+    if (!a.attribute_weights.empty() && a.policy != "quadric")
+      throw usage_error("--attributes works with --policy quadric only");
     if (!a.boundary_given) a.boundary = "preserve";
     if (a.boundary != "preserve" && a.boundary != "lock" && a.boundary != "free")
       throw usage_error("unknown boundary mode '" + a.boundary + "' (preserve|lock|free)");
@@ -794,8 +826,9 @@ int cmd_subdivide(const Args& a) {
 // ---- simplify ----------------------------------------------------------------
 
 template <class Policy, class Mesh>
-genmesh::Simplification_result simplify_with(Mesh& mesh, const Args& a, bool progress) {
+genmesh::Simplification_result simplify_with(Mesh& mesh, const Args& a, bool progress, Policy policy = {}) {
   genmesh::Simplification_options<Policy> o;
+  o.policy = std::move(policy);
   o.target_faces = a.faces;
   o.target_ratio = a.ratio;
   if (a.error) {
@@ -817,21 +850,92 @@ genmesh::Simplification_result simplify_with(Mesh& mesh, const Args& a, bool pro
   return r;
 }
 
+// The input's per-vertex attributes on the mesh built from it (one vertex
+// property map each, dynamic width) and the weight --attributes gives each
+// (0: carried to the output, not in the quadrics).
+template <class Mesh>
+struct Cli_attributes {
+  using Map = decltype(genmesh::scratch_property<Eigen::VectorXd>(genmesh::vertex_index, std::declval<Mesh&>()));
+  std::vector<const genmesh::Soup_attribute*> channels;
+  std::vector<Map> maps;
+  std::vector<double> weights;
+
+  Cli_attributes(const genmesh::Polygon_soup& soup, Mesh& mesh, const Args& a) {
+    for (const auto& [name, w] : a.attribute_weights)
+      if (!name.empty() && !soup.vertex_attribute(name)) {
+        std::string have;
+        for (const auto& c : soup.vertex_attributes) have += (have.empty() ? "" : ", ") + c.name;
+        throw genmesh::io_error(a.files[0], "--attributes names '" + bounded(name, 40) + "', which the file does not have (" +
+                                                (have.empty() ? std::string("it has no per-vertex attributes")
+                                                              : "its attributes: " + have) + ")");
+      }
+    for (const auto& c : soup.vertex_attributes) {
+      double w = 0;
+      for (const auto& [name, weight] : a.attribute_weights)
+        if (name.empty() || name == c.name) w = weight;
+      channels.push_back(&c);
+      maps.push_back(genmesh::scratch_property<Eigen::VectorXd>(genmesh::vertex_index, mesh));
+      genmesh::read_vertex_attribute(c, mesh, maps.back());
+      weights.push_back(w);
+    }
+  }
+
+  // The quadric policy over the weighted ones. An integer colour (0..255)
+  // counts in units of full scale, as a float colour in [0, 1] does.
+  genmesh::Attribute_quadrics<Mesh> policy() const {
+    genmesh::Attribute_quadrics<Mesh> q;
+    for (std::size_t k = 0; k < channels.size(); ++k) {
+      if (weights[k] <= 0) continue;
+      const bool byte_colour = channels[k]->name == "color" && channels[k]->type != genmesh::Scalar_type::float32 &&
+                               channels[k]->type != genmesh::Scalar_type::float64;
+      q.attributes.push_back(genmesh::vertex_attribute(maps[k], byte_colour ? weights[k] / 255.0 : weights[k],
+                                                       channels[k]->name));
+    }
+    return q;
+  }
+
+  // The mesh's soup with the attributes' current values.
+  genmesh::Polygon_soup soup(const Mesh& mesh) const {
+    genmesh::Polygon_soup out = genmesh::to_soup(mesh);
+    for (std::size_t k = 0; k < channels.size(); ++k)
+      out.vertex_attributes.push_back(
+          genmesh::make_soup_attribute(mesh, maps[k], channels[k]->name, channels[k]->components, channels[k]->type));
+    return out;
+  }
+
+  // "[{"name":"color","width":3,"weight":0.2},...]"
+  std::string json() const {
+    std::string j = "[";
+    for (std::size_t k = 0; k < channels.size(); ++k) {
+      std::ostringstream w;
+      w << weights[k];
+      j += std::string(k ? "," : "") + "{\"name\":\"" + json_escape(channels[k]->name) +
+           "\",\"width\":" + std::to_string(channels[k]->width()) + ",\"weight\":" + w.str() + "}";
+    }
+    return j + "]";
+  }
+};
+
 int cmd_simplify(const Args& a) {
   genmesh::Polygon_soup soup = read_input(a, a.files[0]);
   const bool progress = !a.json && isatty(STDERR_FILENO);
+  if (a.repair && !soup.vertex_attributes.empty() && !genmesh::check_soup(soup).ok())
+    genmesh::repair_soup(soup); // here, not in build_mesh: split vertices get their attributes too
   return with_backend(a.backend, [&](auto& mesh) {
+    using Mesh = std::remove_reference_t<decltype(mesh)>;
     try {
       genmesh::build_mesh(soup, mesh, {.repair = a.repair});
     } catch (const genmesh::invalid_input& e) {
       return report_unbuildable(a.files[0], e);
     }
+    const Cli_attributes<Mesh> attributes(soup, mesh, a);
     const auto t0 = std::chrono::steady_clock::now();
     genmesh::Simplification_result r;
     try {
       if (a.policy == "probabilistic") r = simplify_with<genmesh::Probabilistic_quadrics>(mesh, a, progress);
       else if (a.policy == "length") r = simplify_with<genmesh::Edge_length>(mesh, a, progress);
       else if (a.policy == "lindstrom-turk") r = simplify_with<genmesh::Lindstrom_turk>(mesh, a, progress);
+      else if (auto q = attributes.policy(); !q.attributes.empty()) r = simplify_with(mesh, a, progress, std::move(q));
       else r = simplify_with<genmesh::Plane_quadrics>(mesh, a, progress);
     } catch (const genmesh::invalid_input& e) {
       // simplify refused the mesh ("face 0 is not a triangle"): name the file (issue 14).
@@ -839,13 +943,20 @@ int cmd_simplify(const Args& a) {
     }
     const double seconds = seconds_since(t0);
     genmesh::Mesh_report report = genmesh::check_mesh(mesh);
-    genmesh::write_mesh(a.files[1], mesh, {.binary = a.binary});
+    if (attributes.channels.empty()) {
+      genmesh::write_mesh(a.files[1], mesh, {.binary = a.binary});
+    } else {
+      genmesh::write_soup(a.files[1], attributes.soup(mesh), {.binary = a.binary});
+      const auto format = genmesh::detail::io::format_from_extension(a.files[1]);
+      if (format == genmesh::File_format::obj || format == genmesh::File_format::stl)
+        std::cerr << "genmesh: note: " << a.files[1] << " holds no per-vertex attributes; written without them\n";
+    }
     if (a.json) {
       std::cout << "{\"command\":\"simplify\",\"file\":\"" << json_escape(a.files[0]) << "\",\"output\":\""
                 << json_escape(a.files[1]) << "\",\"backend\":\"" << a.backend << "\",\"policy\":\"" << a.policy
-                << "\",\"collapses\":" << r.collapses << ",\"max_error\":" << r.max_error
-                << ",\"stop_reason\":\"" << genmesh::to_string(r.stop_reason) << "\"," << json_counts(report)
-                << ",\"seconds\":" << seconds << "}\n";
+                << "\",\"attributes\":" << attributes.json() << ",\"collapses\":" << r.collapses
+                << ",\"max_error\":" << r.max_error << ",\"stop_reason\":\"" << genmesh::to_string(r.stop_reason)
+                << "\"," << json_counts(report) << ",\"seconds\":" << seconds << "}\n";
     } else {
       std::cout << a.files[0] << " -> " << a.files[1] << ": " << soup.num_faces() << " -> " << report.faces
                 << " faces, " << r.collapses << " collapses, max error " << r.max_error << ", stopped: "

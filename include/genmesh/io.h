@@ -13,6 +13,16 @@
 // for check_soup() to report. OFF (and PLY) data after the elements the
 // header announces is ignored, as CGAL does.
 //
+// Per-vertex attributes (Polygon_soup::vertex_attributes): PLY vertex
+// properties beyond x y z are read into named channels (red green blue
+// [alpha] → "color", nx ny nz → "normal", u v / s t / texture_u texture_v →
+// "texcoord", any other scalar property → its own name) with their types;
+// OFF's C, N and ST variants give "color", "normal" and "texcoord". The PLY
+// writer writes every channel with its type; the OFF writer writes the
+// [ST][C][N]OFF keyword and the channels it has a place for; OBJ and STL
+// write none. Malformed attribute values (not a number, not finite, an
+// integer property outside its type) are io_errors naming the line or byte.
+//
 // Guarantees: every malformed file gives a genmesh::io_error naming the file
 // and the line (text) or byte offset (binary) — never a crash, a silent
 // partial soup or a bad_alloc from a lying header. Read soups have finite

@@ -268,7 +268,7 @@ inline void reorient(Repair& r) {
 }
 
 /// Pass 5: each fan of a vertex beyond the one holding its lowest corner
-/// gets a new point (a copy of the vertex's).
+/// gets a new point (a copy of the vertex's, attribute values included).
 inline void split_non_manifold_vertices(Repair& r) {
   Polygon_soup& soup = r.soup;
   Soup_repair_report& rep = r.rep;
@@ -288,6 +288,9 @@ inline void split_non_manifold_vertices(Repair& r) {
       if (root == first_root[v]) continue;
       if (new_point[root] == k_null) {
         new_point[root] = soup.add_point(Eigen::Vector3d(soup.points[v]));
+        for (Soup_attribute& a : soup.vertex_attributes) // the copy's attributes too
+          std::copy_n(a.values.begin() + static_cast<std::ptrdiff_t>(v * a.width()), a.width(),
+                      a.values.begin() + static_cast<std::ptrdiff_t>(new_point[root] * a.width()));
         rep.point_origin.push_back(v);
         ++rep.added_points;
         if (extra[v]++ == 0) ++rep.split_vertices;

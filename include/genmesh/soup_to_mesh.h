@@ -25,8 +25,15 @@
 // to_soup(g) numbers vertices in vertex iteration order and faces in face
 // iteration order, each face starting at its lowest-numbered vertex
 // (a rotation: the orientation is kept). canonical(soup) also sorts the faces.
+//
+// Per-vertex attributes: a soup's channels (Polygon_soup::vertex_attributes)
+// go into vertex property maps of the mesh built from it with
+// read_vertex_attribute(), and a mesh's maps become channels of to_soup(g)
+// with make_soup_attribute() — both in vertex iteration order, the numbering
+// build_mesh and to_soup share.
 #pragma once
 
+#include <genmesh/attribute_traits.h>
 #include <genmesh/concepts.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/point_traits.h>
@@ -310,6 +317,9 @@ class Soup_view {
 
   std::size_t num_points() const noexcept { return num_points_; }
   std::size_t num_faces() const noexcept { return num_faces_; }
+  /// No attribute channels: a mesh's attributes are its property maps (write
+  /// them with to_soup() and make_soup_attribute()).
+  std::span<const Soup_attribute> vertex_attributes() const noexcept { return {}; }
 
   /// f(number, point) for every vertex, in number order.
   template <class F>
@@ -391,6 +401,80 @@ Polygon_soup to_soup(const G& g) {
   return s;
 }
 
+/// Puts soup channel `a` into the vertex property map `map` of g, a mesh
+/// built from that soup (build_mesh: point i is the i-th vertex of
+/// vertices(g)): the i-th vertex gets point i's values. The map's value type
+/// is any genmesh::Attribute_value (double, Eigen vector, std::array,
+/// std::vector, point type). Throws genmesh::invalid_input when g's vertex
+/// count is not the number of points `a` holds values for, or when the
+/// value type cannot hold a.width() values.
+template <class G, class Map>
+  requires VertexListGraph<G> && Attribute_value<typename boost::property_traits<Map>::value_type>
+void read_vertex_attribute(const Soup_attribute& a, const G& g, Map map) {
+  using T = typename boost::property_traits<Map>::value_type;
+  const std::size_t w = a.width();
+  std::size_t n = 0;
+  for ([[maybe_unused]] auto v : vertices(g)) ++n;
+  if (w == 0 || a.values.size() != n * w)
+    throw invalid_input("read_vertex_attribute: attribute '" + a.name + "' holds " + std::to_string(a.values.size()) +
+                        " values, not " + std::to_string(w) + " for each of the mesh's " + std::to_string(n) +
+                        " vertices");
+  std::size_t i = 0;
+  for (auto v : vertices(g)) {
+    T x = get(map, v);
+    if (!Attribute_traits<T>::assign(x, a.values.data() + i * w, w))
+      throw invalid_input("read_vertex_attribute: attribute '" + a.name + "' has " + std::to_string(w) +
+                          " values per vertex, more or fewer than the map's value type holds");
+    put(map, v, x);
+    ++i;
+  }
+}
+
+/// A channel named `name` holding map's values for g's vertices in
+/// iteration order (to_soup(g)'s point numbering), to be stored as `type`.
+/// `components` names each value (PLY property names); empty: "red green
+/// blue [alpha]" for "color", "nx ny nz" for "normal", "u v" for
+/// "texcoord", the name itself for one value, else name_0, name_1, ...
+/// Throws genmesh::invalid_input when the vertices' values differ in width,
+/// or `components` has another size than that width.
+template <class G, class Map>
+  requires VertexListGraph<G> && Attribute_value<typename boost::property_traits<Map>::value_type>
+Soup_attribute make_soup_attribute(const G& g, Map map, std::string name, std::vector<std::string> components = {},
+                                   Scalar_type type = Scalar_type::float64) {
+  using T = typename boost::property_traits<Map>::value_type;
+  using Traits = Attribute_traits<T>;
+  Soup_attribute a;
+  a.name = std::move(name);
+  a.type = type;
+  std::size_t w = 0, n = 0;
+  for (auto v : vertices(g)) {
+    const T& x = get(map, v);
+    const std::size_t k = Traits::width(x);
+    if (n == 0) w = k;
+    if (k != w || k == 0)
+      throw invalid_input("make_soup_attribute: attribute '" + a.name + "' has " + std::to_string(k) +
+                          " values at vertex number " + std::to_string(n) + " but " + std::to_string(w) +
+                          " at the first");
+    for (std::size_t j = 0; j < k; ++j) a.values.push_back(Traits::get(x, j));
+    ++n;
+  }
+  if (components.empty()) {
+    static const std::vector<std::string> colour{"red", "green", "blue", "alpha"}, normal{"nx", "ny", "nz"},
+        uv{"u", "v"};
+    if (a.name == "color" && (w == 3 || w == 4)) components.assign(colour.begin(), colour.begin() + w);
+    else if (a.name == "normal" && w == 3) components = normal;
+    else if (a.name == "texcoord" && w == 2) components = uv;
+    else if (w == 1) components = {a.name};
+    else
+      for (std::size_t j = 0; j < w; ++j) components.push_back(a.name + "_" + std::to_string(j));
+  }
+  if (n > 0 && components.size() != w)
+    throw invalid_input("make_soup_attribute: attribute '" + a.name + "' has " + std::to_string(w) +
+                        " values per vertex but " + std::to_string(components.size()) + " component names");
+  a.components = std::move(components);
+  return a;
+}
+
 /// soup with every face rotated to start at its lowest corner (orientation kept).
 inline Polygon_soup rotate_faces_to_lowest(Polygon_soup soup) {
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
@@ -401,7 +485,7 @@ inline Polygon_soup rotate_faces_to_lowest(Polygon_soup soup) {
 }
 
 /// soup with faces rotated to start at their lowest corner and sorted
-/// lexicographically; points untouched. Two meshes with equal canonical soups
+/// lexicographically; points (and their attributes) untouched. Two meshes with equal canonical soups
 /// have the same points, the same faces and the same orientations.
 inline Polygon_soup canonical(Polygon_soup soup) {
   soup = rotate_faces_to_lowest(std::move(soup));
@@ -413,6 +497,7 @@ inline Polygon_soup canonical(Polygon_soup soup) {
   });
   Polygon_soup out;
   out.points = std::move(soup.points);
+  out.vertex_attributes = std::move(soup.vertex_attributes);
   out.indices.reserve(soup.indices.size());
   out.offsets.reserve(soup.offsets.size());
   for (auto f : order) out.add_face(soup.face(f));

@@ -56,6 +56,8 @@ struct Remeshing_options {
   /// Rounds of split, collapse, flip, smooth, project (≥ 0).
   int iterations = 5;
   /// Tangential smoothing rule, steps per round and step size (0, 1].
+  /// isotropic_remeshing smooths smoothing_steps steps in its last round and
+  /// half as many (rounded up) in the rounds before.
   Smoothing smoothing = Smoothing::area_weighted;
   int smoothing_steps = 4;
   double smoothing_step_size = 1.0;

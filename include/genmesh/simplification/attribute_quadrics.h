@@ -9,8 +9,9 @@
 // space (the 2-plane through its three lifted corners). A collapse goes to
 // the point of R^(3+k) minimizing the summed quadric: a position and the
 // attribute values of the survivor, which simplify() writes back into the
-// attributes' property maps. So an edge across a colour or UV seam costs what the seam would
-// lose, and the survivor gets the values that fit its neighbourhood best.
+// attributes' property maps. So an edge across a colour or UV seam costs
+// what the seam would lose, and the survivor gets the values that fit its
+// neighbourhood best.
 // (Hoppe's 1999 metric is a variant of this one with a smaller matrix; the
 // minimizer is the same for k ≤ 3 up to the weighting of the geometric term.)
 //

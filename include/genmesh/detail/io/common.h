@@ -5,6 +5,7 @@
 // Private to <genmesh/io.h>; nothing here is API.
 #pragma once
 
+#include <genmesh/attribute_traits.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/polygon_soup.h>
 
@@ -600,6 +601,8 @@ class Soup_source {
   explicit Soup_source(const Polygon_soup& s) noexcept : s_(s) {}
   std::size_t num_points() const noexcept { return s_.num_points(); }
   std::size_t num_faces() const noexcept { return s_.num_faces(); }
+  /// The per-point attribute channels (check_attributes_for_write() first).
+  std::span<const Soup_attribute> vertex_attributes() const noexcept { return s_.vertex_attributes; }
   template <class F>
   void for_each_point(F&& f) const {
     for (std::size_t v = 0; v < s_.num_points(); ++v) f(v, s_.points[v]);
@@ -634,6 +637,65 @@ inline void check_face_for_write(std::span<const Polygon_soup::Index> c, std::si
                                std::to_string(i) + " out of range (" +
                                std::to_string(num_points) + " points)");
 }
+/// Throws io_error unless every channel has width() values per point, all
+/// finite, and a component name for each (the PLY writer writes the names).
+inline void check_attributes_for_write(std::span<const Soup_attribute> channels, std::size_t num_points,
+                                       const std::string& file) {
+  for (const Soup_attribute& a : channels) {
+    if (a.width() == 0 || a.name.empty())
+      throw io_error(file, "cannot write: attribute " + quote(a.name) + " has no name or no components");
+    for (const std::string& c : a.components)
+      if (c.empty() || std::any_of(c.begin(), c.end(), [](char x) { return Text_cursor::is_space_or_newline(x); }))
+        throw io_error(file, "cannot write: attribute " + quote(a.name) + " has a component named " + quote(c) +
+                                 " (empty or with white space)");
+    if (a.values.size() != num_points * a.width())
+      throw io_error(file, "cannot write: attribute " + quote(a.name) + " has " + std::to_string(a.values.size()) +
+                               " values for " + std::to_string(num_points) + " points of " +
+                               std::to_string(a.width()) + " values each");
+    for (std::size_t i = 0; i < a.values.size(); ++i)
+      if (!std::isfinite(a.values[i]))
+        throw io_error(file, "cannot write: point " + std::to_string(i / a.width()) + " has a non-finite " +
+                                 quote(a.components[i % a.width()]) + " value");
+  }
+}
+
+/// f.template operator()<T>() with T the C++ type of t.
+template <class F>
+decltype(auto) visit_scalar_type(Scalar_type t, F&& f) {
+  switch (t) {
+    case Scalar_type::int8: return f.template operator()<std::int8_t>();
+    case Scalar_type::uint8: return f.template operator()<std::uint8_t>();
+    case Scalar_type::int16: return f.template operator()<std::int16_t>();
+    case Scalar_type::uint16: return f.template operator()<std::uint16_t>();
+    case Scalar_type::int32: return f.template operator()<std::int32_t>();
+    case Scalar_type::uint32: return f.template operator()<std::uint32_t>();
+    case Scalar_type::float32: return f.template operator()<float>();
+    case Scalar_type::float64: break;
+  }
+  return f.template operator()<double>();
+}
+
+/// Appends an attribute value as text in type t (integers rounded and
+/// clamped to the type's range, floats in their shortest round-trip form;
+/// doubles as append_double).
+inline void append_attribute(std::string& out, double v, Scalar_type t, int precision) {
+  visit_scalar_type(t, [&]<class T>() {
+    const T x = genmesh::detail::attribute_component<T>(v);
+    if constexpr (std::is_same_v<T, double>) {
+      append_double(out, x, precision);
+    } else {
+      char b[32];
+      const auto r = std::to_chars(b, b + sizeof b, x);
+      out.append(b, r.ptr);
+    }
+  });
+}
+
+/// Appends an attribute value in little-endian binary as type t.
+inline void store_attribute_le(std::string& out, double v, Scalar_type t) {
+  visit_scalar_type(t, [&]<class T>() { store_le(out, genmesh::detail::attribute_component<T>(v)); });
+}
+
 inline void check_point_for_write(const Eigen::Vector3d& p, std::size_t v, const std::string& file) {
   if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
     throw io_error(file, "cannot write: point " + std::to_string(v) + " has a non-finite coordinate");

@@ -4,9 +4,14 @@
 // element gives the points from its x, y, z properties (any numeric type, any
 // position among other properties); the `face` element gives the faces from
 // its `vertex_indices` (or `vertex_index`) list, with any integer count and
-// index type. Every other property and element (normals, colors, edges,
-// lists of any kind) is skipped. Writes ascii or binary little endian with
-// double coordinates.
+// index type. The vertex element's other scalar properties become the soup's
+// attribute channels: red green blue [alpha] → "color", nx ny nz → "normal",
+// u v (or s t, texture_u texture_v, texture_s texture_t) → "texcoord", any
+// other → a channel of its own name; a non-finite value, or an integer
+// property whose text is not an integer of its type, is an error naming the
+// line (or byte). Other elements and vertex lists are skipped. Writes ascii
+// or binary little endian with double coordinates, and each channel's
+// components with the type it was read with.
 #pragma once
 
 #include <genmesh/detail/io/common.h>
@@ -15,7 +20,7 @@
 
 namespace genmesh::detail::io {
 
-enum class Ply_type : std::uint8_t { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
+using Ply_type = Scalar_type;
 
 inline std::optional<Ply_type> ply_type_from_name(std::string_view n) {
   if (n == "char" || n == "int8") return Ply_type::int8;
@@ -38,6 +43,30 @@ inline std::size_t ply_size(Ply_type t) {
   return 0;
 }
 inline bool ply_is_integer(Ply_type t) { return t != Ply_type::float32 && t != Ply_type::float64; }
+inline const char* ply_type_name(Ply_type t) {
+  switch (t) {
+    case Ply_type::int8: return "char";
+    case Ply_type::uint8: return "uchar";
+    case Ply_type::int16: return "short";
+    case Ply_type::uint16: return "ushort";
+    case Ply_type::int32: return "int";
+    case Ply_type::uint32: return "uint";
+    case Ply_type::float32: return "float";
+    case Ply_type::float64: return "double";
+  }
+  return "double";
+}
+/// The range of a type's values (as doubles; infinite for floats).
+inline std::pair<double, double> ply_integer_range(Ply_type t) {
+  return visit_scalar_type(t, []<class T>() {
+    if constexpr (std::is_integral_v<T>)
+      return std::pair<double, double>(static_cast<double>(std::numeric_limits<T>::lowest()),
+                                       static_cast<double>(std::numeric_limits<T>::max()));
+    else
+      return std::pair<double, double>(-std::numeric_limits<double>::infinity(),
+                                       std::numeric_limits<double>::infinity());
+  });
+}
 
 /// A binary value of type t at p, converted to R: double for coordinates,
 /// std::int64_t for counts and indices (only integer types are read so).
@@ -73,6 +102,84 @@ struct Ply_element {
   std::uint64_t count = 0;
   std::vector<Ply_property> properties;
 };
+
+/// Where a vertex property's value goes: channel and component (channel -1:
+/// not an attribute — a coordinate or a list).
+struct Ply_attribute_slot {
+  int channel = -1;
+  std::size_t component = 0;
+};
+
+/// The attribute channels of a vertex element (names, components, types;
+/// no values yet) and each property's slot. xyz: the coordinates' properties.
+inline std::vector<Ply_attribute_slot> ply_vertex_channels(const Ply_element& vertex, const int xyz[3],
+                                                           std::vector<Soup_attribute>& channels) {
+  const auto& props = vertex.properties;
+  std::vector<Ply_attribute_slot> slot(props.size());
+  const auto find = [&](std::string_view name) -> int {
+    for (std::size_t i = 0; i < props.size(); ++i)
+      if (props[i].name == name && !props[i].is_list && static_cast<int>(i) != xyz[0] &&
+          static_cast<int>(i) != xyz[1] && static_cast<int>(i) != xyz[2] && slot[i].channel < 0)
+        return static_cast<int>(i);
+    return -1;
+  };
+  // Named groups first (a group needs all its members; alpha is optional),
+  // then every other scalar property alone; channels in the order of their
+  // first property.
+  struct Group {
+    const char* name;
+    std::vector<std::vector<const char*>> spellings;
+    bool optional_last;
+  };
+  const Group groups[] = {{"color", {{"red", "green", "blue", "alpha"}}, true},
+                          {"normal", {{"nx", "ny", "nz"}}, false},
+                          {"texcoord", {{"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}}, false}};
+  std::vector<std::pair<int, Soup_attribute>> found; // (first property, channel)
+  std::vector<std::vector<int>> members;
+  for (const Group& g : groups) {
+    for (const auto& names : g.spellings) {
+      std::vector<int> at;
+      for (const char* n : names) at.push_back(find(n));
+      if (g.optional_last && at.back() < 0) at.pop_back();
+      if (std::find(at.begin(), at.end(), -1) != at.end()) continue;
+      Soup_attribute a;
+      a.name = g.name;
+      for (int i : at) {
+        a.components.push_back(props[static_cast<std::size_t>(i)].name);
+        slot[static_cast<std::size_t>(i)].channel = 0; // taken; numbered below
+      }
+      found.emplace_back(*std::min_element(at.begin(), at.end()), std::move(a));
+      members.push_back(std::move(at));
+      break;
+    }
+  }
+  for (std::size_t i = 0; i < props.size(); ++i) {
+    if (props[i].is_list || slot[i].channel >= 0 || static_cast<int>(i) == xyz[0] || static_cast<int>(i) == xyz[1] ||
+        static_cast<int>(i) == xyz[2])
+      continue;
+    Soup_attribute a;
+    a.name = props[i].name;
+    a.components = {props[i].name};
+    slot[i].channel = 0;
+    found.emplace_back(static_cast<int>(i), std::move(a));
+    members.push_back({static_cast<int>(i)});
+  }
+  std::vector<std::size_t> order(found.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return found[a].first < found[b].first; });
+  for (const std::size_t k : order) {
+    Soup_attribute& a = found[k].second;
+    const auto& m = members[k];
+    // One type for the channel: the members' common type, else double.
+    a.type = props[static_cast<std::size_t>(m.front())].type;
+    for (int i : m)
+      if (props[static_cast<std::size_t>(i)].type != a.type) a.type = Ply_type::float64;
+    for (std::size_t c = 0; c < m.size(); ++c)
+      slot[static_cast<std::size_t>(m[c])] = {static_cast<int>(channels.size()), c};
+    channels.push_back(std::move(a));
+  }
+  return slot;
+}
 
 struct Ply_header {
   enum class Format { ascii, binary_little_endian, binary_big_endian } format = Format::ascii;
@@ -191,6 +298,33 @@ inline Polygon_soup read_ply(const File_content& file) {
     soup.offsets.reserve(std::min<std::size_t>(face->count, cap) + 1);
     soup.indices.reserve(std::min<std::size_t>(face->count, cap / 3) * 3);
   }
+  const std::vector<Ply_attribute_slot> slot = ply_vertex_channels(*vertex, xyz, soup.vertex_attributes);
+  for (auto& a : soup.vertex_attributes)
+    a.values.reserve(std::min<std::size_t>(vertex->count * a.width(), file.data.size()));
+  // Room for vertex i's attribute values (0 until read).
+  const auto open_vertex = [&] {
+    for (auto& a : soup.vertex_attributes) a.values.resize(a.values.size() + a.width(), 0.0);
+  };
+  // Why value v of vertex property k cannot be an attribute value, or empty.
+  const auto bad_value = [&](std::size_t k, double v, bool text) -> std::string {
+    const auto& prop = vertex->properties[k];
+    if (!std::isfinite(v)) return "non-finite value of vertex property '" + prop.name + "'";
+    if (text && ply_is_integer(prop.type)) {
+      const auto [lo, hi] = ply_integer_range(prop.type);
+      if (v != std::trunc(v) || v < lo || v > hi) {
+        char b[32];
+        std::snprintf(b, sizeof b, "%.17g", v);
+        return std::string("malformed value of vertex property '") + prop.name + "': " + b + " is not a " +
+               ply_type_name(prop.type);
+      }
+    }
+    return {};
+  };
+  // Stores vertex i's value of property k (an attribute: slot[k].channel >= 0).
+  const auto store = [&](std::uint64_t i, std::size_t k, double v) {
+    auto& a = soup.vertex_attributes[static_cast<std::size_t>(slot[k].channel)];
+    a.values[static_cast<std::size_t>(i) * a.width() + slot[k].component] = v;
+  };
   const std::int64_t nv = static_cast<std::int64_t>(vertex->count);
   const auto index_error = [&](std::uint64_t f, std::int64_t idx) {
     return "face " + std::to_string(f) + " has index " + std::to_string(idx) + " out of range (" +
@@ -206,6 +340,7 @@ inline Polygon_soup read_ply(const File_content& file) {
       const bool is_vertex = &e == vertex, is_face = &e == face;
       for (std::uint64_t i = 0; i < e.count; ++i) {
         Eigen::Vector3d p(0, 0, 0);
+        if (is_vertex) open_vertex();
         for (std::size_t k = 0; k < e.properties.size(); ++k) {
           const auto& prop = e.properties[k];
           in.skip_whitespace_and_newlines();
@@ -241,6 +376,11 @@ inline Polygon_soup read_ply(const File_content& file) {
             else if (ply_is_integer(prop.type)) v = std::trunc(v);
             for (int c = 0; c < 3; ++c)
               if (static_cast<int>(k) == xyz[c]) p[c] = v;
+          } else if (is_vertex && slot[k].channel >= 0) {
+            const double v = in.read_double("vertex property value");
+            if (const std::string why = bad_value(k, v, true); !why.empty())
+              in.fail(why + " (vertex " + std::to_string(i) + ")");
+            store(i, k, v);
           } else {
             // Skipped values are only checked to be numbers ("255" or "1.0"
             // alike, whatever the declared type).
@@ -288,12 +428,23 @@ inline Polygon_soup read_ply(const File_content& file) {
       if (is_vertex) {
         const Ply_type tx = e.properties[xyz[0]].type, ty = e.properties[xyz[1]].type,
                        tz = e.properties[xyz[2]].type;
+        // The attribute properties and where each lies in a vertex's record.
+        std::vector<std::pair<std::size_t, std::size_t>> attribute_at; // (property, byte offset)
+        for (std::size_t k = 0, o = 0; k < e.properties.size(); o += ply_size(e.properties[k].type), ++k)
+          if (slot[k].channel >= 0) attribute_at.emplace_back(k, o);
         for (std::uint64_t i = 0; i < e.count; ++i, p += stride) {
           const Eigen::Vector3d q(ply_load_double(p + at[0], tx, little),
                                   ply_load_double(p + at[1], ty, little),
                                   ply_load_double(p + at[2], tz, little));
           check_finite(q, i, file.name, std::nullopt, offset(p));
           soup.points.push_back(q);
+          open_vertex();
+          for (const auto& [k, o] : attribute_at) {
+            const double v = ply_load_double(p + o, e.properties[k].type, little);
+            if (const std::string why = bad_value(k, v, false); !why.empty())
+              throw io_error(file.name, why + " (vertex " + std::to_string(i) + ")", std::nullopt, offset(p + o));
+            store(i, k, v);
+          }
         }
       } else {
         p += stride * e.count;
@@ -303,6 +454,7 @@ inline Polygon_soup read_ply(const File_content& file) {
     for (std::uint64_t i = 0; i < e.count; ++i) {
       const char* const start = p;
       Eigen::Vector3d point(0, 0, 0);
+      if (is_vertex) open_vertex();
       for (std::size_t k = 0; k < e.properties.size(); ++k) {
         const auto& prop = e.properties[k];
         if (!prop.is_list) {
@@ -311,9 +463,16 @@ inline Polygon_soup read_ply(const File_content& file) {
             p = start;
             throw truncated(e, i);
           }
-          if (is_vertex)
+          if (is_vertex) {
             for (int c = 0; c < 3; ++c)
               if (static_cast<int>(k) == xyz[c]) point[c] = ply_load_double(p, prop.type, little);
+            if (slot[k].channel >= 0) {
+              const double v = ply_load_double(p, prop.type, little);
+              if (const std::string why = bad_value(k, v, false); !why.empty())
+                throw io_error(file.name, why + " (vertex " + std::to_string(i) + ")", std::nullopt, offset(p));
+              store(i, k, v);
+            }
+          }
           p += s;
           continue;
         }
@@ -368,12 +527,22 @@ void write_ply(Atomic_file& out, const Source& soup, bool binary, int precision)
   // types only when the soup needs them.
   const bool wide_count = max_corners > 255;
   const bool wide_index = soup.num_points() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max());
+  const auto channels = soup.vertex_attributes();
+  check_attributes_for_write(channels, soup.num_points(), out.name());
   std::string& b = out.buffer;
   b += "ply\nformat ";
   b += binary ? "binary_little_endian" : "ascii";
   b += " 1.0\ncomment written by genmesh\nelement vertex ";
   append_int(b, soup.num_points());
-  b += "\nproperty double x\nproperty double y\nproperty double z\nelement face ";
+  b += "\nproperty double x\nproperty double y\nproperty double z";
+  for (const Soup_attribute& a : channels)
+    for (const std::string& c : a.components) {
+      b += "\nproperty ";
+      b += ply_type_name(a.type);
+      b += ' ';
+      b += c;
+    }
+  b += "\nelement face ";
   append_int(b, soup.num_faces());
   b += "\nproperty list ";
   b += wide_count ? "uint " : "uchar ";
@@ -385,8 +554,19 @@ void write_ply(Atomic_file& out, const Source& soup, bool binary, int precision)
       store_le(b, p.x());
       store_le(b, p.y());
       store_le(b, p.z());
+      for (const Soup_attribute& a : channels)
+        for (const double x : a.of(v)) store_attribute_le(b, x, a.type);
     } else {
       append_point(b, p, precision);
+      if (!channels.empty()) {
+        b.pop_back(); // the point's newline: its attributes follow on its line
+        for (const Soup_attribute& a : channels)
+          for (const double x : a.of(v)) {
+            b += ' ';
+            append_attribute(b, x, a.type, precision);
+          }
+        b += '\n';
+      }
     }
     out.flush_if_large();
   });

@@ -22,7 +22,9 @@
 // most 50 passes; bad triangles: 2 passes; a pass after the first looks only
 // at the edges near the previous pass's flips (the others would decide as
 // before). Smoothing: fixed steps. Projection: one Aabb_tree query per
-// vertex, started at the triangle it was last projected to.
+// vertex, started at the triangle it was last projected to. The final
+// clean-up (improve_min_angle): at most 3 passes over the triangles still
+// below 36°, each move a fixed number of candidate points.
 #pragma once
 
 #include <genmesh/concepts.h>
@@ -552,8 +554,11 @@ public:
   }
 
   /// Returns the number of free vertices (moved at each step).
-  std::size_t tangential_relaxation() {
-    if (o_.smoothing == Smoothing::none || o_.smoothing_steps <= 0) return 0;
+  std::size_t tangential_relaxation() { return tangential_relaxation(o_.smoothing_steps); }
+
+  /// As tangential_relaxation(), with `steps` steps instead of options.smoothing_steps.
+  std::size_t tangential_relaxation(int steps) {
+    if (o_.smoothing == Smoothing::none || steps <= 0) return 0;
     grow();
     // The topology does not change while smoothing: read each free vertex's
     // ring once (canonical order, compressed rows of vertex numbers), the
@@ -573,7 +578,7 @@ public:
     }
     std::vector<Eigen::Vector3d> moved(free.size());
     const double lambda = o_.smoothing_step_size;
-    for (int step = 0; step < o_.smoothing_steps; ++step) {
+    for (int step = 0; step < steps; ++step) {
       for (std::size_t i = 0; i < free.size(); ++i) {
         const Eigen::Vector3d p = pos[free_id[i]];
         const std::uint32_t b = offset[i], k = offset[i + 1] - b;
