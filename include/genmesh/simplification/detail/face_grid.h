@@ -2,12 +2,12 @@
 // bounding boxes (private; the self-intersection guard of simplify).
 //
 // A uniform grid of cubic cells, stored sparsely (cell key → face ids). A
-// face is listed in every cell its box overlaps. Entries are never removed:
-// a face that changed is inserted again with its new box (move()) into the
-// cells of its new range that its old box's range did not cover — the
-// caller keeps the box a face was last inserted with, so the grid keeps no
-// per-face data — and queries skip what no longer overlaps (the caller
-// checks the current box). An entry may be stale, but a face is never
+// face is listed in every cell its box overlaps. A face that changed is
+// inserted again with its new box (move()) into the cells of its new range
+// that its old box's range did not cover — the caller keeps the box a face
+// was last inserted with, so the grid keeps no per-face data. An entry may
+// be stale (the face is gone or has left the cell): queries skip it, and
+// the caller may drop it as it walks a cell's list; but a face is never
 // missing from a cell its current box overlaps. The caller rebuilds the
 // grid with a larger cell when faces have grown (simplify: whenever the
 // face count halves).
