@@ -70,6 +70,14 @@ long long json_int(const std::string& json, const std::string& key) {
   return std::stoll(m[1]);
 }
 
+// The floating-point field `key` of a one-line JSON record.
+double json_double(const std::string& json, const std::string& key) {
+  std::smatch m;
+  if (!std::regex_search(json, m, std::regex("\"" + key + "\":(-?[0-9.eE+-]+)")))
+    throw std::runtime_error("no number field '" + key + "' in: " + json);
+  return std::stod(m[1]);
+}
+
 bool json_bool(const std::string& json, const std::string& key) {
   std::smatch m;
   if (!std::regex_search(json, m, std::regex("\"" + key + "\":(true|false)")))
@@ -640,6 +648,16 @@ TEST(Cli, SimplifyMeetsTheTargetOnEveryBackend) {
     EXPECT_EQ(json_int(r.out, "faces"), 1000);
     EXPECT_NE(r.out.find("\"stop_reason\":\"target_faces\""), std::string::npos) << r.out;
     EXPECT_EQ(json_int(r.out, "euler_characteristic"), -4);  // genus 3 kept
+    // The quality figures of the result: no self-intersection (the guard),
+    // a Hausdorff distance to the input that is small but not zero.
+    EXPECT_EQ(json_int(r.out, "self_intersections"), 0) << r.out;
+    const double hausdorff = json_double(r.out, "hausdorff");
+    EXPECT_GT(hausdorff, 0) << r.out;
+    EXPECT_LT(hausdorff, 0.05) << r.out;
+    EXPECT_GT(json_double(r.out, "min_angle"), 0) << r.out;
+    const double valence6 = json_double(r.out, "valence6_share");
+    EXPECT_GT(valence6, 0) << r.out;
+    EXPECT_LT(valence6, 1) << r.out;
     if (first.empty()) first = read_file(out);
     else EXPECT_EQ(read_file(out), first);
   }
@@ -662,14 +680,6 @@ TEST(Cli, SimplifyMeetsTheTargetOnEveryBackend) {
 } // namespace
 
 namespace {
-
-// The floating-point field `key` of a one-line JSON record.
-double json_double(const std::string& json, const std::string& key) {
-  std::smatch m;
-  if (!std::regex_search(json, m, std::regex("\"" + key + "\":(-?[0-9.eE+-]+)")))
-    throw std::runtime_error("no number field '" + key + "' in: " + json);
-  return std::stod(m[1]);
-}
 
 // remesh: every backend writes the same file; the JSON record has the counts
 // and the quality of the result; bad options are usage errors.

@@ -146,7 +146,7 @@ const char* usage_text =
     "                     lines: collapses run along them, never across; corners stay\n"
     "                     remesh: edges sharper than DEG degrees are kept as feature lines\n"
     "  --samples N        measure: face samples per direction (default max(10 x faces, 100000));\n"
-    "                     remesh: for the Hausdorff figure (default 100000)\n"
+    "                     remesh, simplify: for the Hausdorff figure (default 100000)\n"
     "  --edge-length L | --relative R   remesh: target edge length, absolute or times the\n"
     "                     input's mean edge length (default --relative 1)\n"
     "  --iterations N     remesh: rounds (default 5)\n"
@@ -392,6 +392,15 @@ std::string json_escape(const std::string& s) {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// A JSON number (17 digits), or null when x is not finite.
+std::string json_number(double x) {
+  if (!std::isfinite(x)) return "null";
+  std::ostringstream o;
+  o.precision(17);
+  o << x;
+  return o.str();
 }
 
 // The fields every record shares: the mesh's counts and topology.
@@ -929,6 +938,8 @@ int cmd_simplify(const Args& a) {
       return report_unbuildable(a.files[0], e);
     }
     const Cli_attributes<Mesh> attributes(soup, mesh, a);
+    Mesh input; // the Hausdorff distance's reference
+    genmesh::build_mesh(genmesh::to_soup(mesh), input);
     const auto t0 = std::chrono::steady_clock::now();
     genmesh::Simplification_result r;
     try {
@@ -943,6 +954,16 @@ int cmd_simplify(const Args& a) {
     }
     const double seconds = seconds_since(t0);
     genmesh::Mesh_report report = genmesh::check_mesh(mesh);
+    // The figures a simplified mesh is judged by, as remesh reports them:
+    // triangle quality, self-intersecting pairs, and the Hausdorff distance
+    // to the input (100 000 samples each way unless --samples N).
+    const auto q = genmesh::triangle_quality(mesh);
+    const std::size_t intersecting = genmesh::self_intersections(mesh).size();
+    const double diag = genmesh::diagonal(input);
+    genmesh::Hausdorff_options ho;
+    ho.samples = a.samples ? a.samples : 100'000;
+    const auto h = genmesh::hausdorff_distance(mesh, input, ho);
+    const double hausdorff = diag > 0 ? h.hausdorff / diag : std::nan("");
     if (attributes.channels.empty()) {
       genmesh::write_mesh(a.files[1], mesh, {.binary = a.binary});
     } else {
@@ -956,11 +977,18 @@ int cmd_simplify(const Args& a) {
                 << json_escape(a.files[1]) << "\",\"backend\":\"" << a.backend << "\",\"policy\":\"" << a.policy
                 << "\",\"attributes\":" << attributes.json() << ",\"collapses\":" << r.collapses
                 << ",\"max_error\":" << r.max_error << ",\"stop_reason\":\"" << genmesh::to_string(r.stop_reason)
-                << "\"," << json_counts(report) << ",\"seconds\":" << seconds << "}\n";
+                << "\"," << json_counts(report) << ",\"min_angle\":" << json_number(q.min_angle)
+                << ",\"angles_below_30\":" << json_number(q.angles_below_30)
+                << ",\"valence6_share\":" << json_number(q.valence6_share)
+                << ",\"self_intersections\":" << intersecting << ",\"hausdorff\":" << json_number(hausdorff)
+                << ",\"seconds\":" << seconds << "}\n";
     } else {
       std::cout << a.files[0] << " -> " << a.files[1] << ": " << soup.num_faces() << " -> " << report.faces
                 << " faces, " << r.collapses << " collapses, max error " << r.max_error << ", stopped: "
                 << genmesh::to_string(r.stop_reason) << ", " << seconds << " s\n";
+      std::printf("  min angle %.2f deg, angles below 30 deg %.3f %%, interior valence 6 %.1f %%,"
+                  " %zu self-intersecting pairs, Hausdorff %.3g of the diagonal\n",
+                  q.min_angle, 100 * q.angles_below_30, 100 * q.valence6_share, intersecting, hausdorff);
     }
     return report.ok() ? exit_ok : exit_invalid;
   });
@@ -1081,13 +1109,6 @@ int cmd_demo(const Args& a) {
 
 // genmesh measure A [B]: quality and self-intersections of A (and B); with B
 // the two-way Hausdorff and RMS distances. Exit 0 whatever the numbers say.
-std::string json_number(double x) {
-  if (!std::isfinite(x)) return "null";
-  std::ostringstream o;
-  o.precision(17);
-  o << x;
-  return o.str();
-}
 
 // Self-intersecting pairs of a mesh; a polygon mesh is measured on the fan
 // triangulation of its soup (built as a Halfedge_mesh).
