@@ -97,8 +97,7 @@ class Mutable_priority_queue {
     heap_[i].priority = std::move(p);
     // Against the parent, not the old priority: with a keyed Compare the
     // order of an unchanged priority may have moved.
-    if (i > 0 && before(heap_[i], heap_[(i - 1) / arity])) sift_up(i);
-    else sift_down(i);
+    restore(i);
   }
 
   /// Removes key; does nothing when key is not queued.
@@ -190,11 +189,17 @@ class Mutable_priority_queue {
       heap_[i] = std::move(heap_[last]);
       heap_.pop_back();
       position_[heap_[i].key] = static_cast<Index>(i);
-      if (i > 0 && before(heap_[i], heap_[(i - 1) / arity])) sift_up(i);
-      else sift_down(i);
+      restore(i);
     } else {
       heap_.pop_back();
     }
+  }
+
+  // Puts the entry at i, whose priority changed, where it belongs: up if it
+  // now goes before its parent, else down.
+  void restore(std::size_t i) {
+    if (i > 0 && before(heap_[i], heap_[(i - 1) / arity])) sift_up(i);
+    else sift_down(i);
   }
 
   // Both sifts move the entry into a hole instead of swapping at each level.

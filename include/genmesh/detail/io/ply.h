@@ -402,6 +402,13 @@ inline Polygon_soup read_ply(const File_content& file) {
   const char* p = base + h.body_offset;
   const char* const end = base + file.data.size();
   const auto offset = [&](const char* q) { return static_cast<std::uint64_t>(q - base); };
+  // Vertex i's binary value of attribute property k, at q.
+  const auto load_attribute = [&](std::uint64_t i, std::size_t k, const char* q) {
+    const double v = ply_load_double(q, vertex->properties[k].type, little);
+    if (const std::string why = bad_value(k, v, false); !why.empty())
+      throw io_error(file.name, why + " (vertex " + std::to_string(i) + ")", std::nullopt, offset(q));
+    store(i, k, v);
+  };
   const auto truncated = [&](const Ply_element& e, std::uint64_t i) {
     return io_error(file.name,
                     "truncated: the header says " + std::to_string(e.count) + " '" + e.name +
@@ -439,12 +446,7 @@ inline Polygon_soup read_ply(const File_content& file) {
           check_finite(q, i, file.name, std::nullopt, offset(p));
           soup.points.push_back(q);
           open_vertex();
-          for (const auto& [k, o] : attribute_at) {
-            const double v = ply_load_double(p + o, e.properties[k].type, little);
-            if (const std::string why = bad_value(k, v, false); !why.empty())
-              throw io_error(file.name, why + " (vertex " + std::to_string(i) + ")", std::nullopt, offset(p + o));
-            store(i, k, v);
-          }
+          for (const auto& [k, o] : attribute_at) load_attribute(i, k, p + o);
         }
       } else {
         p += stride * e.count;
@@ -466,12 +468,7 @@ inline Polygon_soup read_ply(const File_content& file) {
           if (is_vertex) {
             for (int c = 0; c < 3; ++c)
               if (static_cast<int>(k) == xyz[c]) point[c] = ply_load_double(p, prop.type, little);
-            if (slot[k].channel >= 0) {
-              const double v = ply_load_double(p, prop.type, little);
-              if (const std::string why = bad_value(k, v, false); !why.empty())
-                throw io_error(file.name, why + " (vertex " + std::to_string(i) + ")", std::nullopt, offset(p));
-              store(i, k, v);
-            }
+            if (slot[k].channel >= 0) load_attribute(i, k, p);
           }
           p += s;
           continue;

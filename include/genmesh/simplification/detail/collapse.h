@@ -1128,7 +1128,7 @@ class Collapser {
   std::vector<std::uint8_t> locked_, hint_, refused_;
   // Feature lines: per edge, is it one; per vertex, does it move along one.
   bool features_ = false;
-  // The self-intersection guard: faces by index, alive or not, stamps, grid.
+  // The self-intersection guard: faces by index, alive or not, and the grid.
   // Per face: its box (float, rounded outwards: half the memory traffic of
   // the query loop; the grid lists the face in the cells of this box), its corners
   // (read by a candidate's exact test without walking the mesh; v[0] ==
