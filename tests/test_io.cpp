@@ -1341,6 +1341,54 @@ TYPED_TEST(IoMesh, MissingFile) {
 // A soup's channels go into vertex property maps of the mesh built from it
 // and come back out of the mesh, following the vertices: after collapses
 // (holes in the numbering) every point of to_soup(g) still has its colour.
+// read_mesh returns the file's channels in the mesh's vertex order and
+// write_mesh writes them with the mesh: the same bytes as write_soup of
+// to_soup(g) with them; with .repair, a split vertex's copy gets its values; a channel of the
+// wrong size is refused before the target changes.
+TYPED_TEST(IoMesh, ReadMeshAndWriteMeshCarryChannels) {
+  Polygon_soup soup = genmesh::make_torus(6, 4);
+  genmesh::Soup_attribute quality{"quality", {"quality"}, genmesh::Scalar_type::float32, {}};
+  genmesh::Soup_attribute uv{"texcoord", {"u", "v"}, genmesh::Scalar_type::float64, {}};
+  for (std::size_t i = 0; i < soup.num_points(); ++i) {
+    quality.values.push_back(static_cast<double>(i) + 0.5);
+    uv.values.insert(uv.values.end(), {soup.points[i].x(), soup.points[i].y()});
+  }
+  soup.vertex_attributes = {quality, uv};
+  const std::string in = genmesh_test::tmp_path("channels_in.ply");
+  write_soup(in, soup);
+  TypeParam g;
+  const std::vector<genmesh::Soup_attribute> channels = genmesh::read_mesh(in, g);
+  EXPECT_EQ(channels, soup.vertex_attributes);
+  Polygon_soup expected = genmesh::to_soup(g);
+  expected.vertex_attributes = channels;
+  for (const char* out : {"channels_out.ply", "channels_out.obj", "channels_out.off"}) {
+    const std::string from_mesh = genmesh_test::tmp_path(std::string("mesh_") + out);
+    const std::string from_soup = genmesh_test::tmp_path(std::string("soup_") + out);
+    genmesh::write_mesh(from_mesh, g, channels);
+    write_soup(from_soup, expected);
+    EXPECT_EQ(read_bytes(from_mesh), read_bytes(from_soup)) << out;
+  }
+  EXPECT_EQ(read_soup(genmesh_test::tmp_path("mesh_channels_out.obj")).vertex_attribute("texcoord")->values, uv.values);
+  const std::string p = genmesh_test::tmp_path("mesh_channels_out.ply");
+  const std::string before = read_bytes(p);
+  std::vector<genmesh::Soup_attribute> bad = channels;
+  bad[0].values.pop_back();
+  expect_io_error([&] { genmesh::write_mesh(p, g, bad); }, p, {"attribute 'quality' has", {}, {}});
+  EXPECT_EQ(read_bytes(p), before);
+
+  // Two fans meeting at point 0 (a bow-tie): the repair splits it.
+  const std::string bow = write_file("bowtie_quality.ply",
+                                     "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+                                     "property float z\nproperty float quality\nelement face 2\n"
+                                     "property list uchar int vertex_indices\nend_header\n"
+                                     "0 0 0 7\n1 0 0 1\n1 1 0 2\n-1 0 0 3\n-1 -1 0 4\n3 0 1 2\n3 0 3 4\n");
+  TypeParam r;
+  const auto repaired = genmesh::read_mesh(bow, r, {.repair = true});
+  ASSERT_EQ(num_vertices(r), 6u);
+  ASSERT_EQ(repaired.size(), 1u);
+  EXPECT_EQ(repaired[0].values, (std::vector<double>{7, 1, 2, 3, 4, 7}));
+}
+
 TYPED_TEST(IoMesh, AttributesFollowTheirVertices) {
   Polygon_soup soup = genmesh::make_torus(8, 5, true);
   genmesh::Soup_attribute colour{"color", {"red", "green", "blue"}, genmesh::Scalar_type::uint8, {}};

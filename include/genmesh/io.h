@@ -226,7 +226,7 @@ std::vector<Soup_attribute> read_mesh(const std::filesystem::path& path, G& g, c
   Polygon_soup soup = read_soup(path, options);
   try {
     // Repaired here rather than in build_mesh, so that the channels follow the split vertices.
-    if (options.repair && !soup.vertex_attributes.empty() && !check_soup(soup).ok()) repair_soup(soup);
+    if (options.repair && !soup.vertex_attributes.empty()) repair_soup(soup); // nothing when the soup is fine
     build_mesh(soup, g, Build_options{.repair = options.repair});
   } catch (const invalid_input& e) {
     throw io_error(path.string(), e.what());
