@@ -288,6 +288,18 @@ public:
     return v;
   }
 
+  /// How many tokens are left on this line before its end or a comment
+  /// (the cursor does not move).
+  std::size_t tokens_left() const noexcept {
+    Text_cursor peek = *this;
+    std::size_t n = 0;
+    while (!peek.at_eol_or_comment()) {
+      (void)peek.token();
+      ++n;
+    }
+    return n;
+  }
+
   /// Parses a signed integer.
   std::int64_t read_int(const char* what) {
     skip_spaces();

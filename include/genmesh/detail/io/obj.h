@@ -150,13 +150,7 @@ inline Polygon_soup read_obj(const File_content& file, Obj_attributes mode = Obj
         in.fail("too many vertices");
       if (attributes) {
         // x y z r g b: a vertex colour (x y z w and other counts: extras ignored).
-        Text_cursor peek = in;
-        std::size_t extra = 0;
-        while (!peek.at_eol_or_comment()) {
-          (void)peek.token();
-          ++extra;
-        }
-        if (extra == 3) {
+        if (in.tokens_left() == 3) {
           colour.resize(3 * soup.points.size(), 0.0);
           for (const char* c : {"red value", "green value", "blue value"}) colour.push_back(value(c));
         }
