@@ -432,9 +432,14 @@ private:
     if (d < s.best_d) s.best_d = d, s.best_c = c, s.best = i;
   }
 
-  // The float just above x (x >= 0), so that a float compared against it
-  // is never wrongly found larger.
-  static float bound_up(double x) { return x > std::numeric_limits<float>::max() ? inf_f : up(x); }
+  // A float no smaller than x (x >= 0), so that a float compared against it
+  // is never wrongly found larger; the next float up by its bits (a call of
+  // nextafter per bound was 1 % of remeshing).
+  static float bound_up(double x) {
+    if (!(x < std::numeric_limits<float>::max())) return inf_f;
+    const float f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) + 1) : f;
+  }
 
   // Lower bounds d[c] of the squared distances from q (qf: q in float) to
   // the boxes of node's children, and the mask of the children that exist

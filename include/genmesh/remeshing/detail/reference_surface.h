@@ -113,6 +113,8 @@ public:
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 
   bool empty() const { return tree_->empty(); }
+  /// The number of indexed triangles (leaf-order indices are below it).
+  std::size_t triangle_count() const { return tree_->triangle_count(); }
 
 private:
   Eigen::Vector3d answer(const Eigen::Vector3d& q, const typename Aabb_tree<G>::Closest& c, std::size_t& triangle,
