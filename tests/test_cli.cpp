@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -242,6 +243,51 @@ TEST(Cli, FailedConvertLeavesExistingOutputIntact) {
   Cli_run nodir = genmesh("convert " + real_mesh("cube.off") + " " + tmp_path("no/such/dir/x.off"));
   EXPECT_EQ(nodir.exit_code, 2);
   EXPECT_NE(nodir.err.find("x.off"), std::string::npos) << nodir.err;
+}
+
+// convert carries the per-vertex attributes the output format can hold:
+// colored_tetra.ply (normals, uchar colours, an int id) → OFF (CNOFF: the id
+// has no place, a note says so) → OBJ (vn, colours in [0, 1]) → PLY, on
+// every backend with the same files; an OBJ with a texture seam becomes a
+// PLY with the seam's vertices split and their texture coordinates.
+TEST(Cli, ConvertCarriesAttributesAcrossFormats) {
+  const genmesh::Polygon_soup in = genmesh::read_soup(real_mesh("colored_tetra.ply"));
+  const std::vector<double>& normal = in.vertex_attribute("normal")->values;
+  const std::vector<double>& colour = in.vertex_attribute("color")->values;
+  std::map<std::string, std::string> first;
+  for (const char* backend : {"halfedge", "surface-mesh", "incidence"}) {
+    SCOPED_TRACE(backend);
+    std::string current = real_mesh("colored_tetra.ply");
+    for (const std::string ext : {".off", ".obj", ".ply"}) {
+      const std::string out = tmp_path(std::string("attr_") + backend + ext);
+      Cli_run c = genmesh("convert " + current + " " + out + " --backend " + backend);
+      ASSERT_EQ(c.exit_code, 0) << ext << ": " << c.out << c.err;
+      EXPECT_EQ(c.err.find("note") != std::string::npos, ext == ".off") << ext << ": " << c.err;
+      if (ext == ".off") EXPECT_NE(c.err.find("attribute(s) id;"), std::string::npos) << c.err;
+      const genmesh::Polygon_soup s = genmesh::read_soup(out);
+      ASSERT_NE(s.vertex_attribute("normal"), nullptr) << ext;
+      ASSERT_NE(s.vertex_attribute("color"), nullptr) << ext;
+      EXPECT_EQ(s.vertex_attribute("normal")->values, normal) << ext;
+      const std::vector<double>& c2 = s.vertex_attribute("color")->values;
+      ASSERT_EQ(c2.size(), colour.size()) << ext;
+      const double full = ext == ".off" ? 1.0 : 255.0; // OBJ's colours are in [0, 1]
+      for (std::size_t i = 0; i < colour.size(); ++i) EXPECT_NEAR(c2[i] * full, colour[i], 1e-12) << ext << " " << i;
+      if (first.count(ext)) EXPECT_EQ(read_file(out), first[ext]) << ext;
+      else first[ext] = read_file(out);
+      current = out;
+    }
+  }
+  const std::string seam = tmp_path("seam_cli.obj");
+  write_file(seam, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 0.5\nvt 0.5 1\nvt 0 1\n"
+                   "f 1/1 2/2 3/3\nf 1/4 3/5 4/6\n");
+  const std::string ply = tmp_path("seam_cli.ply");
+  Cli_run c = genmesh("convert " + seam + " " + ply + " --json");
+  ASSERT_EQ(c.exit_code, 0) << c.out << c.err;
+  EXPECT_EQ(json_int(c.out, "vertices"), 6);
+  EXPECT_EQ(json_int(c.out, "boundary_loops"), 2);
+  const genmesh::Polygon_soup s = genmesh::read_soup(ply);
+  ASSERT_NE(s.vertex_attribute("texcoord"), nullptr);
+  EXPECT_EQ(s.vertex_attribute("texcoord")->values, (std::vector<double>{0, 0, 1, 0, 1, 1, 0, 1, 0, 0.5, 0.5, 1}));
 }
 
 // simplify --attributes: a flat grid coloured red below a slanted line and

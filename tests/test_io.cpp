@@ -506,15 +506,31 @@ TEST(IoErrors, Off) {
 
 TEST(IoErrors, Obj) {
   const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-  expect_read_error("zero.obj", v + "f 0 1 2\n", {"face 0 has index 0 (OBJ indices start at 1)", 4, {}});
-  expect_read_error("range.obj", v + "f 1 2 3\nf 1 2 9\nf 1 2 4\n", {"face 1 has index 9 out of range (3 vertices)", 5, {}});
-  expect_read_error("rel.obj", v + "f -1 -2 -4\n", {"face 0 has relative index -4 out of range", 4, {}});
+  expect_read_error("zero.obj", v + "f 0 1 2\n", {"face 0 has vertex index 0 (OBJ indices start at 1)", 4, {}});
+  expect_read_error("range.obj", v + "f 1 2 3\nf 1 2 9\nf 1 2 4\n", {"face 1 has vertex index 9 out of range (3 vertices)", 5, {}});
+  expect_read_error("rel.obj", v + "f -1 -2 -4\n", {"face 0 has relative vertex index -4 out of range", 4, {}});
   expect_read_error("two.obj", v + "f 1 2\n", {"face 0 has 2 corners (at least 3 needed)", 4, {}});
   expect_read_error("nan.obj", "v 0 0 0\nv NaN 0 0\n", {"vertex 1 has a non-finite coordinate", 2, {}});
   expect_read_error("malformed.obj", "v 0 0 0\nv 1 0 0,5\n", {"malformed z coordinate", 2, {}});
   expect_read_error("short_v.obj", "v 0 0\n", {"line ends before z coordinate", 1, {}});
   expect_read_error("bad_corner.obj", v + "f 1 2 3x\n", {"malformed vertex index", 4, {}});
   expect_read_error("not_obj.obj", v + "1 2 3\n", {"not an OBJ statement: '1'", 4, {}});
+  // Texture coordinates, normals and colours: malformed values and indices name the line.
+  expect_read_error("vt_word.obj", v + "vt 0 zero\n", {"malformed texture coordinate v: expected a number, found 'zero'", 4, {}});
+  expect_read_error("vt_inf.obj", v + "vt inf 0\n", {"non-finite texture coordinate u", 4, {}});
+  expect_read_error("vt_none.obj", v + "vt\n", {"line ends before texture coordinate u", 4, {}});
+  expect_read_error("vn_short.obj", v + "vn 0 0\n", {"line ends before normal z", 4, {}});
+  expect_read_error("vn_nan.obj", v + "vn 0 nan 1\n", {"non-finite normal y", 4, {}});
+  expect_read_error("rgb_word.obj", "v 0 0 0 1 0 red\n", {"malformed blue value: expected a number, found 'red'", 1, {}});
+  expect_read_error("vt_range.obj", v + "vt 0 0\nf 1/1 2/2 3/1\n",
+                    {"face 0 has texture coordinate index 2 out of range (1 texture coordinates)", 5, {}});
+  expect_read_error("vn_range.obj", v + "vn 0 0 1\nf 1//1 2//1 3//-2\n",
+                    {"face 0 has relative normal index -2 out of range (1 read so far)", 5, {}});
+  expect_read_error("vt_zero.obj", v + "vt 0 0\nf 1/0 2/1 3/1\n",
+                    {"face 0 has texture coordinate index 0 (OBJ indices start at 1)", 5, {}});
+  for (const char* corner : {"3/", "3//", "3/1/", "3/x", "3/1/1/1"})
+    expect_read_error("corner.obj", v + "vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 " + corner + "\n",
+                      {"malformed vertex index", 6, {}});
   // Statements other than v and f are skipped, known or not.
   EXPECT_EQ(read_soup(write_file("vendor.obj", v + "vc 1 0 0\nfrobnicate 1 2\nf 1 2 3\n")).num_faces(), 1u);
   expect_read_error("binary.obj", v + std::string("\x7f\x45\x4c\x46\x02\x01\x01\0\0", 9),
@@ -1134,6 +1150,96 @@ TEST(IoAttributes, MalformedValuesAreErrorsNamingTheLine) {
                     {"vertex 1 has a non-finite texture coordinate value", 4, {}});
 }
 
+// OBJ: vn, vertex colours and vt become "normal", "color" and "texcoord".
+// A square cut along its diagonal in texture space (a UV seam): corners 1
+// and 3 have other texture coordinates in the second triangle, so the
+// default split_seams appends two points (copies of 1 and 3) and the mesh
+// has a border along the seam; equal normals under different vn indices are
+// no seam. first_corner keeps four points, none reads geometry only.
+//
+//   4 ------ 3        vt: triangle 1 2 3 at (0,0) (1,0) (1,1);
+//   |      / |            triangle 1 3 4 at (0,0.5) (0.5,1) (0,1)
+//   |    /   |
+//   |  /     |
+//   1 ------ 2
+TEST(IoAttributes, ObjTexcoordsNormalsColoursAndSeams) {
+  const std::string text = "v 0 0 0 1 0 0\n"
+                           "v 1 0 0 0 1 0\n"
+                           "v 1 1 0 0 0 1\n"
+                           "v 0 1 0 0.5 0.5 0.5\n"
+                           "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 0.5\nvt 0.5 1\nvt 0 1\n"
+                           "vn 0 0 1\nvn 0 0 1\n"
+                           "f 1/1/1 2/2/1 3/3/2\n"
+                           "f 1/4/2 3/5/1 4/6/2\n";
+  const std::string p = write_file("seam.obj", text);
+  const Polygon_soup s = read_soup(p);
+  using V = std::vector<Polygon_soup::Index>;
+  using D = std::vector<double>;
+  ASSERT_EQ(s.num_points(), 6u);
+  EXPECT_EQ(s.points[4], s.points[0]);
+  EXPECT_EQ(s.points[5], s.points[2]);
+  EXPECT_EQ(V(s.face(0).begin(), s.face(0).end()), (V{0, 1, 2}));
+  EXPECT_EQ(V(s.face(1).begin(), s.face(1).end()), (V{4, 5, 3}));
+  ASSERT_EQ(s.vertex_attributes.size(), 3u);
+  EXPECT_EQ(s.vertex_attributes[0].name, "normal");
+  EXPECT_EQ(s.vertex_attributes[0].values, (D{0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}));
+  EXPECT_EQ(s.vertex_attributes[1].name, "color");
+  EXPECT_EQ(s.vertex_attributes[1].values, (D{1, 0, 0, 0, 1, 0, 0, 0, 1, 0.5, 0.5, 0.5, 1, 0, 0, 0, 0, 1}));
+  EXPECT_EQ(s.vertex_attributes[2].name, "texcoord");
+  EXPECT_EQ(components(s.vertex_attributes[2]), (std::vector<std::string>{"u", "v"}));
+  EXPECT_EQ(s.vertex_attributes[2].values, (D{0, 0, 1, 0, 1, 1, 0, 1, 0, 0.5, 0.5, 1}));
+  {
+    genmesh::Halfedge_mesh g;
+    EXPECT_EQ(genmesh::build_mesh(s, g).border_halfedges, 6u) << "the seam is a border";
+  }
+  // Written back (OBJ: v r g b, vt and vn per point, f a/a/a) it reads as the same soup.
+  const std::string q = genmesh_test::tmp_path("seam_out.obj");
+  write_soup(q, s);
+  EXPECT_NE(read_bytes(q).find("f 5/5/5 6/6/6 4/4/4"), std::string::npos);
+  EXPECT_EQ(read_soup(q), s);
+  // To PLY and OFF and back: the same values.
+  for (const char* out : {"seam_out.ply", "seam_out.off"}) {
+    const std::string o = genmesh_test::tmp_path(out);
+    write_soup(o, s);
+    const Polygon_soup t = read_soup(o);
+    for (const char* name : {"normal", "color", "texcoord"}) {
+      ASSERT_NE(t.vertex_attribute(name), nullptr) << out << " " << name;
+      EXPECT_EQ(t.vertex_attribute(name)->values, s.vertex_attribute(name)->values) << out << " " << name;
+    }
+  }
+
+  const Polygon_soup first = read_soup(p, {.obj_attributes = genmesh::Obj_attributes::first_corner});
+  ASSERT_EQ(first.num_points(), 4u);
+  EXPECT_EQ(V(first.face(1).begin(), first.face(1).end()), (V{0, 2, 3}));
+  EXPECT_EQ(first.vertex_attribute("texcoord")->values, (D{0, 0, 1, 0, 1, 1, 0, 1}));
+  const Polygon_soup none = read_soup(p, {.obj_attributes = genmesh::Obj_attributes::none});
+  EXPECT_EQ(none.num_points(), 4u);
+  EXPECT_TRUE(none.vertex_attributes.empty());
+  // A corner without vt or vn takes its vertex's: no split.
+  const Polygon_soup partial = read_soup(write_file("partial.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.25 0.5\n"
+                                                                     "f 1/1 2 3\nf 3 2 1\n"));
+  EXPECT_EQ(partial.num_points(), 3u);
+  EXPECT_EQ(partial.vertex_attribute("texcoord")->values, (D{0.25, 0.5, 0, 0, 0, 0}));
+}
+
+// A uchar colour goes to OBJ in [0, 1] and comes back as doubles.
+TEST(IoAttributes, ObjColoursAreWrittenInUnitRange) {
+  Polygon_soup s = genmesh::make_tetrahedron();
+  s.vertex_attributes.push_back({"color", {"red", "green", "blue", "alpha"}, genmesh::Scalar_type::uint8,
+                                 {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 51, 102, 0, 255}});
+  s.vertex_attributes.push_back({"quality", {"quality"}, genmesh::Scalar_type::float32, {1, 2, 3, 4}});
+  const std::string p = genmesh_test::tmp_path("colours.obj");
+  write_soup(p, s);
+  const Polygon_soup t = read_soup(p);
+  ASSERT_EQ(t.vertex_attributes.size(), 1u) << "OBJ has no place for quality or alpha";
+  EXPECT_EQ(t.vertex_attributes[0].values, (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1, 0.2, 0.4, 0}));
+  EXPECT_EQ(t.points, s.points);
+  EXPECT_TRUE(genmesh::format_stores(genmesh::File_format::obj, s.vertex_attributes[0]));
+  EXPECT_FALSE(genmesh::format_stores(genmesh::File_format::obj, s.vertex_attributes[1]));
+  EXPECT_TRUE(genmesh::format_stores(genmesh::File_format::ply, s.vertex_attributes[1]));
+  EXPECT_FALSE(genmesh::format_stores(genmesh::File_format::stl, s.vertex_attributes[0]));
+}
+
 // A channel that does not fit its soup is refused before the target changes.
 TEST(IoAttributes, WriterRefusesInconsistentChannels) {
   Polygon_soup s = genmesh::make_tetrahedron();
@@ -1235,6 +1341,54 @@ TYPED_TEST(IoMesh, MissingFile) {
 // A soup's channels go into vertex property maps of the mesh built from it
 // and come back out of the mesh, following the vertices: after collapses
 // (holes in the numbering) every point of to_soup(g) still has its colour.
+// read_mesh returns the file's channels in the mesh's vertex order and
+// write_mesh writes them with the mesh: the same bytes as write_soup of
+// to_soup(g) with them; with .repair, a split vertex's copy gets its values; a channel of the
+// wrong size is refused before the target changes.
+TYPED_TEST(IoMesh, ReadMeshAndWriteMeshCarryChannels) {
+  Polygon_soup soup = genmesh::make_torus(6, 4);
+  genmesh::Soup_attribute quality{"quality", {"quality"}, genmesh::Scalar_type::float32, {}};
+  genmesh::Soup_attribute uv{"texcoord", {"u", "v"}, genmesh::Scalar_type::float64, {}};
+  for (std::size_t i = 0; i < soup.num_points(); ++i) {
+    quality.values.push_back(static_cast<double>(i) + 0.5);
+    uv.values.insert(uv.values.end(), {soup.points[i].x(), soup.points[i].y()});
+  }
+  soup.vertex_attributes = {quality, uv};
+  const std::string in = genmesh_test::tmp_path("channels_in.ply");
+  write_soup(in, soup);
+  TypeParam g;
+  const std::vector<genmesh::Soup_attribute> channels = genmesh::read_mesh(in, g);
+  EXPECT_EQ(channels, soup.vertex_attributes);
+  Polygon_soup expected = genmesh::to_soup(g);
+  expected.vertex_attributes = channels;
+  for (const char* out : {"channels_out.ply", "channels_out.obj", "channels_out.off"}) {
+    const std::string from_mesh = genmesh_test::tmp_path(std::string("mesh_") + out);
+    const std::string from_soup = genmesh_test::tmp_path(std::string("soup_") + out);
+    genmesh::write_mesh(from_mesh, g, channels);
+    write_soup(from_soup, expected);
+    EXPECT_EQ(read_bytes(from_mesh), read_bytes(from_soup)) << out;
+  }
+  EXPECT_EQ(read_soup(genmesh_test::tmp_path("mesh_channels_out.obj")).vertex_attribute("texcoord")->values, uv.values);
+  const std::string p = genmesh_test::tmp_path("mesh_channels_out.ply");
+  const std::string before = read_bytes(p);
+  std::vector<genmesh::Soup_attribute> bad = channels;
+  bad[0].values.pop_back();
+  expect_io_error([&] { genmesh::write_mesh(p, g, bad); }, p, {"attribute 'quality' has", {}, {}});
+  EXPECT_EQ(read_bytes(p), before);
+
+  // Two fans meeting at point 0 (a bow-tie): the repair splits it.
+  const std::string bow = write_file("bowtie_quality.ply",
+                                     "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+                                     "property float z\nproperty float quality\nelement face 2\n"
+                                     "property list uchar int vertex_indices\nend_header\n"
+                                     "0 0 0 7\n1 0 0 1\n1 1 0 2\n-1 0 0 3\n-1 -1 0 4\n3 0 1 2\n3 0 3 4\n");
+  TypeParam r;
+  const auto repaired = genmesh::read_mesh(bow, r, {.repair = true});
+  ASSERT_EQ(num_vertices(r), 6u);
+  ASSERT_EQ(repaired.size(), 1u);
+  EXPECT_EQ(repaired[0].values, (std::vector<double>{7, 1, 2, 3, 4, 7}));
+}
+
 TYPED_TEST(IoMesh, AttributesFollowTheirVertices) {
   Polygon_soup soup = genmesh::make_torus(8, 5, true);
   genmesh::Soup_attribute colour{"color", {"red", "green", "blue"}, genmesh::Scalar_type::uint8, {}};

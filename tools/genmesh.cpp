@@ -117,6 +117,7 @@ const char* usage_text =
     "  info FILE          counts and topology of a mesh\n"
     "  check FILE         validity report (soup problems, halfedge invariants)\n"
     "  convert IN OUT     read IN, build a valid mesh, write OUT (format from extension)\n"
+    "                     with the per-vertex attributes OUT's format can hold\n"
     "  subdivide IN OUT   subdivide IN, write OUT\n"
     "  simplify IN OUT    simplify IN by edge collapses, write OUT\n"
     "  remesh IN OUT      isotropic remeshing of IN, write OUT\n"
@@ -139,7 +140,8 @@ const char* usage_text =
     "  --policy P         simplify: quadric|probabilistic|lindstrom-turk|length (default quadric)\n"
     "                     --boundary for simplify: preserve|lock|free (default preserve)\n"
     "  --attributes W | NAME=W[,NAME=W...]   simplify (quadric policy): the input's per-vertex\n"
-    "                     attributes (PLY vertex properties, COFF/NOFF/STOFF extras) in the\n"
+    "                     attributes (PLY vertex properties, COFF/NOFF/STOFF extras, OBJ\n"
+    "                     vt/vn/colours) in the\n"
     "                     quadrics, every one at weight W or each named one at its W; the\n"
     "                     output gets the survivors' optimal values\n"
     "  --features DEG     simplify: edges whose faces meet at DEG degrees or more are feature\n"
@@ -451,6 +453,23 @@ genmesh::Polygon_soup read_input(const Args& a, const std::string& file) {
   return genmesh::read_soup(file, {.max_file_size = a.max_file_size});
 }
 
+// With --repair, a soup with per-vertex attributes is repaired here rather
+// than in build_mesh, so that a split vertex's copies get its attributes.
+void repair_keeping_attributes(const Args& a, genmesh::Polygon_soup& soup) {
+  if (a.repair && !soup.vertex_attributes.empty()) genmesh::repair_soup(soup); // nothing when the soup is fine
+}
+
+// A note on stderr naming the attributes the output's format has no place for.
+void note_unstored_attributes(const std::string& out, std::span<const genmesh::Soup_attribute> channels) {
+  const genmesh::File_format format = genmesh::output_format(out);
+  std::string lost;
+  for (const auto& c : channels)
+    if (!genmesh::format_stores(format, c)) lost += (lost.empty() ? "" : ", ") + c.name;
+  if (!lost.empty())
+    std::cerr << "genmesh: note: " << out << " has no place for the per-vertex attribute(s) " << bounded(lost, 200)
+              << "; written without them\n";
+}
+
 // build_mesh() refused the soup (not a 2-manifold, or --repair could not make
 // one): exit 1, naming the file, as info and check do for the same input.
 int report_unbuildable(const std::string& file, const genmesh::invalid_input& e) {
@@ -524,6 +543,7 @@ int cmd_info_or_check(const Args& a) {
 
 int cmd_convert(const Args& a) {
   genmesh::Polygon_soup soup = read_input(a, a.files[0]);
+  repair_keeping_attributes(a, soup);
   const auto t0 = std::chrono::steady_clock::now();
   return with_backend(a.backend, [&](auto& mesh) {
     Stage stage("building the mesh of " + a.files[0]);
@@ -533,7 +553,9 @@ int cmd_convert(const Args& a) {
     } catch (const genmesh::invalid_input& e) {
       return report_unbuildable(a.files[0], e);
     }
-    soup = genmesh::Polygon_soup{}; // the mesh holds it all now
+    // The mesh holds it all now but the attributes (vertex i of the mesh is point i).
+    const std::vector<genmesh::Soup_attribute> attributes = std::move(soup.vertex_attributes);
+    soup = genmesh::Polygon_soup{};
     genmesh::Mesh_report report = genmesh::check_mesh(mesh);
     const double seconds = seconds_since(t0);
     if (!report.ok()) {
@@ -541,7 +563,8 @@ int cmd_convert(const Args& a) {
       return exit_invalid;
     }
     Stage writing("writing " + a.files[1]);
-    genmesh::write_mesh(a.files[1], mesh, {.binary = a.binary});
+    genmesh::write_mesh(a.files[1], mesh, attributes, {.binary = a.binary});
+    note_unstored_attributes(a.files[1], attributes);
     if (a.json) {
       std::cout << "{\"command\":\"convert\",\"file\":\"" << json_escape(a.files[0])
                 << "\",\"output\":\"" << json_escape(a.files[1]) << "\",\"backend\":\"" << a.backend
@@ -928,8 +951,7 @@ struct Cli_attributes {
 int cmd_simplify(const Args& a) {
   genmesh::Polygon_soup soup = read_input(a, a.files[0]);
   const bool progress = !a.json && isatty(STDERR_FILENO);
-  if (a.repair && !soup.vertex_attributes.empty() && !genmesh::check_soup(soup).ok())
-    genmesh::repair_soup(soup); // here, not in build_mesh: split vertices get their attributes too
+  repair_keeping_attributes(a, soup);
   return with_backend(a.backend, [&](auto& mesh) {
     using Mesh = std::remove_reference_t<decltype(mesh)>;
     try {
@@ -967,10 +989,9 @@ int cmd_simplify(const Args& a) {
     if (attributes.channels.empty()) {
       genmesh::write_mesh(a.files[1], mesh, {.binary = a.binary});
     } else {
-      genmesh::write_soup(a.files[1], attributes.soup(mesh), {.binary = a.binary});
-      const auto format = genmesh::detail::io::format_from_extension(a.files[1]);
-      if (format == genmesh::File_format::obj || format == genmesh::File_format::stl)
-        std::cerr << "genmesh: note: " << a.files[1] << " holds no per-vertex attributes; written without them\n";
+      const genmesh::Polygon_soup out = attributes.soup(mesh);
+      genmesh::write_soup(a.files[1], out, {.binary = a.binary});
+      note_unstored_attributes(a.files[1], out.vertex_attributes);
     }
     if (a.json) {
       std::cout << "{\"command\":\"simplify\",\"file\":\"" << json_escape(a.files[0]) << "\",\"output\":\""

@@ -1,7 +1,7 @@
 // genmesh/io.h — reading and writing polygon soups and meshes: OFF, OBJ, PLY, STL.
 //
-// What it reads: OFF ([ST][C][N]OFF, ASCII), OBJ (v and f; v, v/vt, v//vn,
-// v/vt/vn corners; negative indices; line continuation), PLY (ascii, binary
+// What it reads: OFF ([ST][C][N]OFF, ASCII), OBJ (v, vt, vn and f; v, v/vt,
+// v//vn, v/vt/vn corners; negative indices; line continuation), PLY (ascii, binary
 // little and big endian; x y z of any numeric type among any other
 // properties; vertex_indices lists of any integer types; other elements
 // skipped) and STL (ASCII and binary, corners welded by exact equality).
@@ -17,10 +17,14 @@
 // properties beyond x y z are read into named channels (red green blue
 // [alpha] → "color", nx ny nz → "normal", u v / s t / texture_u texture_v →
 // "texcoord", any other scalar property → its own name) with their types;
-// OFF's C, N and ST variants give "color", "normal" and "texcoord". The PLY
-// writer writes every channel with its type; the OFF writer writes the
-// [ST][C][N]OFF keyword and the channels it has a place for; OBJ and STL
-// write none. Malformed attribute values (not a number, not finite, an
+// OFF's C, N and ST variants give "color", "normal" and "texcoord"; OBJ's
+// vn, vertex colours and vt give "normal", "color" and "texcoord", a vertex
+// with different values at different corners (a seam) split into several
+// points unless Read_options::obj_attributes says otherwise. The PLY writer
+// writes every channel with its type; the OFF and OBJ writers write the
+// channels they have a place for (normal, colour, texture coordinates); STL
+// writes none. read_mesh() returns the file's channels, in the mesh's vertex
+// order, and write_mesh() takes channels to write with the mesh. Malformed attribute values (not a number, not finite, an
 // integer property outside its type) are io_errors naming the line or byte.
 //
 // Guarantees: every malformed file gives a genmesh::io_error naming the file
@@ -50,7 +54,9 @@
 
 #include <cctype>
 #include <filesystem>
+#include <span>
 #include <string>
+#include <vector>
 
 namespace genmesh {
 
@@ -68,6 +74,11 @@ struct Read_options {
   File_format format = File_format::automatic;
   /// read_mesh only: passed to build_mesh() (split non-manifold vertices, reorient).
   bool repair = false;
+  /// OBJ: texture coordinates, normals and vertex colours become channels;
+  /// where a vertex's corners give different ones (a seam), it is split
+  /// (split_seams), keeps its first corner's (first_corner), or nothing is
+  /// read but geometry (none).
+  Obj_attributes obj_attributes = Obj_attributes::split_seams;
   /// Largest input accepted, in bytes: a larger regular file is refused
   /// before it is read, a pipe once it has given more.
   std::uint64_t max_file_size = detail::io::default_max_file_size;
@@ -141,7 +152,7 @@ inline Polygon_soup read_soup(const std::filesystem::path& path, const Read_opti
   try {
     switch (format) {
       case File_format::off: return d::read_off(file);
-      case File_format::obj: return d::read_obj(file);
+      case File_format::obj: return d::read_obj(file, options.obj_attributes);
       case File_format::ply: return d::read_ply(file);
       case File_format::stl: return d::read_stl(file);
       case File_format::automatic: break;
@@ -205,16 +216,22 @@ inline void remove_pending_temporaries() noexcept {
 /// Reads a file into the (empty) mesh g: read_soup(), then build_mesh()
 /// (vertex and face order kept). A soup that build_mesh refuses (non-manifold,
 /// inconsistently oriented; see Read_options::repair) gives an io_error naming
-/// the file, with build_mesh's message.
+/// the file, with build_mesh's message. Returns the file's per-vertex
+/// attribute channels, value i for the i-th vertex of vertices(g) (with
+/// .repair, a split vertex's copies get its values): put them into property
+/// maps with read_vertex_attribute(), or hand them to write_mesh() as they are.
 template <class G>
   requires detail::Soup_buildable<G>
-void read_mesh(const std::filesystem::path& path, G& g, const Read_options& options = {}) {
-  const Polygon_soup soup = read_soup(path, options);
+std::vector<Soup_attribute> read_mesh(const std::filesystem::path& path, G& g, const Read_options& options = {}) {
+  Polygon_soup soup = read_soup(path, options);
   try {
+    // Repaired here rather than in build_mesh, so that the channels follow the split vertices.
+    if (options.repair && !soup.vertex_attributes.empty()) repair_soup(soup); // nothing when the soup is fine
     build_mesh(soup, g, Build_options{.repair = options.repair});
   } catch (const invalid_input& e) {
     throw io_error(path.string(), e.what());
   }
+  return std::move(soup.vertex_attributes);
 }
 
 /// Writes the mesh g as write_soup(path, to_soup(g), options) would, byte
@@ -223,6 +240,34 @@ void read_mesh(const std::filesystem::path& path, G& g, const Read_options& opti
 template <FaceListGraph G>
 void write_mesh(const std::filesystem::path& path, const G& g, const Write_options& options = {}) {
   detail::io::write_source(path, detail::Soup_view<G>(g), options);
+}
+
+/// write_mesh() with per-vertex attribute channels: value i of each channel
+/// belongs to the i-th vertex of vertices(g) (what read_mesh() returns for an
+/// unchanged mesh, or make_soup_attribute() makes from a property map). The
+/// format writes those it has a place for (format_stores()). Throws io_error,
+/// before the target changes, when a channel does not hold width() finite
+/// values for each vertex.
+template <FaceListGraph G>
+void write_mesh(const std::filesystem::path& path, const G& g, std::span<const Soup_attribute> vertex_attributes,
+                const Write_options& options = {}) {
+  detail::io::write_source(path, detail::Soup_view<G>(g, vertex_attributes), options);
+}
+
+/// The format of `path` written with `options` (the extension's when
+/// options.format is automatic; automatic when unknown).
+inline File_format output_format(const std::filesystem::path& path, const Write_options& options = {}) {
+  return options.format == File_format::automatic ? detail::io::format_from_extension(path) : options.format;
+}
+
+/// True when files of format f hold channel a: PLY holds every channel; OFF
+/// and OBJ "normal" (3 values), "color" (3 or 4; OBJ drops alpha) and
+/// "texcoord" (2); STL none.
+inline bool format_stores(File_format f, const Soup_attribute& a) {
+  const bool known = (a.name == "normal" && a.width() == 3) ||
+                     (a.name == "color" && (a.width() == 3 || a.width() == 4)) ||
+                     (a.name == "texcoord" && a.width() == 2);
+  return f == File_format::ply || ((f == File_format::off || f == File_format::obj) && known);
 }
 
 } // namespace genmesh

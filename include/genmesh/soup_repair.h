@@ -93,6 +93,7 @@ struct Repair {
   void compact() {
     Polygon_soup out;
     out.points = std::move(soup.points);
+    out.vertex_attributes = std::move(soup.vertex_attributes);
     std::vector<std::size_t> o;
     for (std::size_t f = 0; f < soup.num_faces(); ++f)
       if (keep[f]) {
@@ -114,8 +115,7 @@ inline void remove_bad_faces(Repair& r) {
   std::vector<std::size_t>& origin = r.origin;
   std::vector<char>& keep = r.keep;
   const Soup_repair_options& opt = r.opt;
-  Polygon_soup out;
-  out.points = soup.points;
+  Polygon_soup out; // its points and attributes are the soup's, moved over at the end
   std::vector<Polygon_soup::Index> c;
   std::vector<std::size_t> o;
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
@@ -152,6 +152,8 @@ inline void remove_bad_faces(Repair& r) {
     out.add_face(c);
     o.push_back(f);
   }
+  out.points = std::move(soup.points);
+  out.vertex_attributes = std::move(soup.vertex_attributes);
   soup = std::move(out);
   origin = std::move(o);
   keep.assign(soup.num_faces(), 1);

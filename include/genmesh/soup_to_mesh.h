@@ -301,9 +301,11 @@ class Soup_view {
  public:
   using Index = Polygon_soup::Index;
 
-  explicit Soup_view(const G& g)
+  /// `channels`: per-vertex attribute channels in vertices(g) order, written
+  /// with the mesh (they must outlive the view).
+  explicit Soup_view(const G& g, std::span<const Soup_attribute> channels = {})
       // HasVertexPoints promises get() on a non-const graph only; the map is only read.
-      : g_(g), points_(get(vertex_point, const_cast<G&>(g))) {
+      : g_(g), points_(get(vertex_point, const_cast<G&>(g))), channels_(channels) {
     if constexpr (HasIndexMap<G, vertex_index_t>) number_.assign(index_bound(vertex_index, g), k_null);
     for (V v : vertices(g)) {
       const auto n = static_cast<std::uint32_t>(num_points_++);
@@ -317,9 +319,10 @@ class Soup_view {
 
   std::size_t num_points() const noexcept { return num_points_; }
   std::size_t num_faces() const noexcept { return num_faces_; }
-  /// No attribute channels: a mesh's attributes are its property maps (write
-  /// them with to_soup() and make_soup_attribute()).
-  std::span<const Soup_attribute> vertex_attributes() const noexcept { return {}; }
+  /// The channels given to the constructor (none by default: a mesh's
+  /// attributes are its property maps; make_soup_attribute() makes channels
+  /// of them).
+  std::span<const Soup_attribute> vertex_attributes() const noexcept { return channels_; }
 
   /// f(number, point) for every vertex, in number order.
   template <class F>
@@ -376,6 +379,7 @@ class Soup_view {
 
   const G& g_;
   decltype(get(vertex_point, std::declval<G&>())) points_;
+  std::span<const Soup_attribute> channels_;
   std::size_t num_points_ = 0;
   std::size_t num_faces_ = 0;
   std::vector<std::uint32_t> number_;           // by vertex index (graphs with an index map)

@@ -288,23 +288,55 @@ public:
     return v;
   }
 
-  /// Parses a signed integer. With `slash_suffix`, a suffix like "/2/3" or
-  /// "//3" after the number is skipped (OBJ's v/vt/vn corners).
-  std::int64_t read_int(const char* what, bool slash_suffix = false) {
+  /// How many tokens are left on this line before its end or a comment
+  /// (the cursor does not move).
+  std::size_t tokens_left() const noexcept {
+    Text_cursor peek = *this;
+    std::size_t n = 0;
+    while (!peek.at_eol_or_comment()) {
+      (void)peek.token();
+      ++n;
+    }
+    return n;
+  }
+
+  /// Parses a signed integer.
+  std::int64_t read_int(const char* what) {
     skip_spaces();
     if (p_ == end_ || is_newline(*p_)) fail(std::string("line ends before ") + what);
-    const char* b = skip_plus_();
     std::int64_t v = 0;
-    auto [ptr, ec] = std::from_chars(b, end_, v);
-    if (ec == std::errc() && slash_suffix && ptr != end_ && *ptr == '/') {
-      while (ptr != end_ && (*ptr == '/' || *ptr == '-' || *ptr == '+' || (*ptr >= '0' && *ptr <= '9')))
-        ++ptr;
-    }
-    if (ec != std::errc() || (ptr != end_ && !is_space_or_newline(*ptr) && *ptr != '#' &&
-                              !(continuation_ && *ptr == '\\')))
-      bad_token(what, "an integer");
+    const char* ptr = parse_int_(p_, v);
+    if (!ptr || !ends_token_(ptr)) bad_token(what, "an integer");
     p_ = ptr;
     return v;
+  }
+
+  /// An OBJ face corner: v, v/vt, v//vn or v/vt/vn (indices as written,
+  /// has_vt/has_vn false where absent). "1/", "1//", "1/2/" and "1/x" are
+  /// malformed.
+  struct Obj_corner {
+    std::int64_t v = 0, vt = 0, vn = 0;
+    bool has_vt = false, has_vn = false;
+  };
+  Obj_corner read_obj_corner() {
+    skip_spaces();
+    if (p_ == end_ || is_newline(*p_)) fail("line ends before vertex index");
+    Obj_corner c;
+    const char* q = parse_int_(p_, c.v);
+    if (q && q != end_ && *q == '/') {
+      ++q;
+      if (q != end_ && *q != '/') {
+        q = parse_int_(q, c.vt);
+        c.has_vt = true;
+      }
+      if (q && q != end_ && *q == '/') {
+        q = parse_int_(q + 1, c.vn);
+        c.has_vn = true;
+      }
+    }
+    if (!q || !ends_token_(q)) bad_token("vertex index", "an integer");
+    p_ = q;
+    return c;
   }
 
   [[noreturn]] void bad_token(const char* what, const char* expected) {
@@ -324,6 +356,22 @@ public:
   }
 
 private:
+  // The integer at b (a leading '+' allowed once): the end of its digits,
+  // or null when there is none or it is out of range.
+  const char* parse_int_(const char* b, std::int64_t& v) const noexcept {
+    if (b != end_ && *b == '+') {
+      ++b;
+      if (b == end_ || *b == '-' || *b == '+') return nullptr;
+    }
+    const auto [ptr, ec] = std::from_chars(b, end_, v);
+    return ec == std::errc() ? ptr : nullptr;
+  }
+  // A number ends its token: white space, a line end, a comment, or (OBJ)
+  // a line continuation.
+  bool ends_token_(const char* q) const noexcept {
+    return q == end_ || is_space_or_newline(*q) || *q == '#' || (continuation_ && *q == '\\');
+  }
+
   // A leading '+' is allowed once, before a digit or a point ("+-1" and "++1"
   // are not numbers; from_chars alone takes no '+').
   const char* skip_plus_() {

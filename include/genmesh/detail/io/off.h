@@ -122,12 +122,7 @@ inline Polygon_soup read_off(const File_content& file) {
     if (normal) read_extra(*normal, "normal", i, 3, normal->values);
     if (colour) {
       // 0, 3 or 4 colour values: what is left before the texture coordinates.
-      Text_cursor peek = in;
-      std::size_t left = 0;
-      while (!peek.at_eol_or_comment()) {
-        (void)peek.token();
-        ++left;
-      }
+      const std::size_t left = in.tokens_left();
       const std::size_t n = left - std::min<std::size_t>(left, texcoord ? 2 : 0);
       if (n != 0 && n != 3 && n != 4)
         in.fail("vertex " + std::to_string(i) + " has " + std::to_string(n) + " colour values (3 or 4 expected)");
