@@ -12,8 +12,8 @@
 // children's boxes side by side, so a closest-point query tests them
 // together (SSE where the compiler offers it) and opens only the children
 // within reach, nearest first. Against the binary tree with leaves of 4
-// triangles it had before: 40 % fewer instructions for remeshing's
-// projection queries (docs/benchmarks.md, "Isotropic remeshing, session 6").
+// triangles it had before: half the instructions for remeshing's projection
+// queries (docs/benchmarks.md, "Isotropic remeshing, session 6").
 // Chosen over a binned surface-area-heuristic build by measurement: 2.5x
 // faster to build (0.27 s against 0.50 s for 832k triangles), queries ~10%
 // slower, self-intersection scans faster overall (docs/benchmarks.md).

@@ -798,39 +798,27 @@ private:
   /// border halfedge if it has one, else the one of its lowest-numbered edge.
   template <class Fn>
   void for_each_in(V v, Fn&& f) const {
-    const H start = halfedge(v, g_);
-    if (start == null_h()) return;
     Ring ring;
-    std::size_t first = 0;
-    bool border = false;
-    std::uint32_t lowest = k_none;
-    H x = start;
-    do {
-      if (!border) {
-        if (is_border(x)) {
-          border = true;
-          first = ring.size();
-        } else if (const std::uint32_t i = eid(x); i < lowest) {
-          lowest = i;
-          first = ring.size();
-        }
-      }
-      ring.push_back(x);
-      x = opposite(next(x, g_), g_);
-    } while (x != start);
+    const std::size_t first = walk_ring(v, [&](H x) { ring.push_back(x); });
     const std::size_t k = ring.size();
-    for (std::size_t i = 0; i < k; ++i) {
-      f(ring[(first + i) % k]);
-    }
+    for (std::size_t i = 0; i < k; ++i) f(ring[(first + i) % k]);
   }
 
   /// Appends the vertex numbers of v's neighbours (the sources of the
-  /// halfedges into v) in for_each_in's order: walked once, then rotated to
-  /// the canonical start (no ring of halfedges kept).
+  /// halfedges into v) in for_each_in's order, without a ring of halfedges:
+  /// walked once, then rotated to the canonical start.
   void append_ring(V v, std::vector<std::uint32_t>& out) const {
+    const auto base = static_cast<std::ptrdiff_t>(out.size());
+    const std::size_t first = walk_ring(v, [&](H x) { out.push_back(vid(source(x, g_))); });
+    std::rotate(out.begin() + base, out.begin() + base + static_cast<std::ptrdiff_t>(first), out.end());
+  }
+
+  /// Calls f(x) for every halfedge x into v, from halfedge(v); returns the
+  /// position of the canonical start among them (see for_each_in).
+  template <class Fn>
+  std::size_t walk_ring(V v, Fn&& f) const {
     const H start = halfedge(v, g_);
-    if (start == null_h()) return;
-    const std::size_t base = out.size();
+    if (start == null_h()) return 0;
     std::size_t first = 0, i = 0;
     bool border = false;
     std::uint32_t lowest = k_none;
@@ -845,12 +833,11 @@ private:
           first = i;
         }
       }
-      out.push_back(vid(source(x, g_)));
+      f(x);
       x = opposite(next(x, g_), g_);
       ++i;
     } while (x != start);
-    std::rotate(out.begin() + static_cast<std::ptrdiff_t>(base), out.begin() + static_cast<std::ptrdiff_t>(base + first),
-                out.end());
+    return first;
   }
 
   // --- sizing ----------------------------------------------------------------
