@@ -47,8 +47,8 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <functional>
@@ -60,51 +60,183 @@
 
 namespace genmesh {
 
+namespace detail::simplification {
+
+// Dense linear algebra on the few (3 + k)-sized matrices of the generalized
+// quadrics, written as plain loops over coefficients so that the result does
+// not depend on how the matrices are stored: Attribute_quadrics<G, N> (inline
+// storage, no allocation) and Attribute_quadrics<G> (heap) give the same bits.
+
+// x·y.
+template <class X, class Y>
+double dot(const X& x, const Y& y) {
+  double r = 0;
+  for (Eigen::Index i = 0; i < x.size(); ++i) r += x[i] * y[i];
+  return r;
+}
+
+// vᵀAv + 2bᵀv + c, A symmetric: its upper triangle read.
+template <class M, class V, class X>
+double quadric_value(const M& a, const V& b, double c, const X& v) {
+  const Eigen::Index n = b.size();
+  double r = c;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    double s = 2 * b[j] + a(j, j) * v[j];
+    for (Eigen::Index i = 0; i < j; ++i) s += 2 * a(i, j) * v[i];
+    r += s * v[j];
+  }
+  return r;
+}
+
+// Solves m x = rhs in place (m and rhs overwritten; the solution in rhs) by
+// Gaussian elimination with full pivoting, as Eigen's FullPivLU: false when a
+// pivot is not above `threshold` times the largest (the first) pivot.
+// `perm` is scratch of m's size.
+template <class M, class V, class P>
+bool full_pivot_solve(M& m, V& rhs, P& perm, double threshold) {
+  const Eigen::Index n = rhs.size();
+  double first = 0;
+  for (Eigen::Index k = 0; k < n; ++k) perm[k] = static_cast<double>(k);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    Eigen::Index pr = k, pc = k;
+    double best = -1;
+    for (Eigen::Index j = k; j < n; ++j)
+      for (Eigen::Index i = k; i < n; ++i)
+        if (std::abs(m(i, j)) > best) best = std::abs(m(i, j)), pr = i, pc = j;
+    if (k == 0) first = best;
+    if (!(best > threshold * first) || !(best > 0)) return false;
+    if (pr != k) {
+      for (Eigen::Index j = 0; j < n; ++j) std::swap(m(k, j), m(pr, j));
+      std::swap(rhs[k], rhs[pr]);
+    }
+    if (pc != k) {
+      for (Eigen::Index i = 0; i < n; ++i) std::swap(m(i, k), m(i, pc));
+      std::swap(perm[k], perm[pc]);
+    }
+    for (Eigen::Index i = k + 1; i < n; ++i) {
+      const double l = m(i, k) / m(k, k);
+      if (l == 0) continue;
+      for (Eigen::Index j = k + 1; j < n; ++j) m(i, j) -= l * m(k, j);
+      rhs[i] -= l * rhs[k];
+    }
+  }
+  for (Eigen::Index i = n - 1; i >= 0; --i) {
+    double s = rhs[i];
+    for (Eigen::Index j = i + 1; j < n; ++j) s -= m(i, j) * rhs[j];
+    rhs[i] = s / m(i, i);
+  }
+  // Undo the column swaps: unknown perm[k] is solution entry k.
+  for (Eigen::Index k = 0; k < n; ++k)
+    while (static_cast<Eigen::Index>(perm[k]) != k) {
+      const auto t = static_cast<Eigen::Index>(perm[k]);
+      std::swap(rhs[k], rhs[t]);
+      std::swap(perm[k], perm[t]);
+    }
+  return true;
+}
+
+// Solves m x = rhs for m symmetric positive semi-definite (LDLᵀ with
+// symmetric pivoting on the largest diagonal, as Eigen's LDLT; a zero pivot
+// gives a zero component). m and rhs are overwritten; the solution in rhs.
+template <class M, class V, class P>
+void semidefinite_solve(M& m, V& rhs, P& perm) {
+  const Eigen::Index n = rhs.size();
+  for (Eigen::Index k = 0; k < n; ++k) perm[k] = static_cast<double>(k);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    Eigen::Index p = k;
+    for (Eigen::Index i = k + 1; i < n; ++i)
+      if (std::abs(m(i, i)) > std::abs(m(p, p))) p = i;
+    if (p != k) { // symmetric swap of k and p
+      for (Eigen::Index j = 0; j < n; ++j) std::swap(m(k, j), m(p, j));
+      for (Eigen::Index i = 0; i < n; ++i) std::swap(m(i, k), m(i, p));
+      std::swap(rhs[k], rhs[p]);
+      std::swap(perm[k], perm[p]);
+    }
+    const double d = m(k, k);
+    if (d == 0) continue;
+    for (Eigen::Index i = k + 1; i < n; ++i) {
+      const double l = m(i, k) / d;
+      if (l == 0) continue;
+      for (Eigen::Index j = k + 1; j < n; ++j) m(i, j) -= l * m(k, j);
+      rhs[i] -= l * rhs[k];
+      m(i, k) = l;
+    }
+  }
+  for (Eigen::Index i = n - 1; i >= 0; --i) {
+    double s = rhs[i];
+    for (Eigen::Index j = i + 1; j < n; ++j) s -= m(i, j) * rhs[j];
+    rhs[i] = m(i, i) != 0 ? s / m(i, i) : 0.0;
+  }
+  for (Eigen::Index k = 0; k < n; ++k)
+    while (static_cast<Eigen::Index>(perm[k]) != k) {
+      const auto t = static_cast<Eigen::Index>(perm[k]);
+      std::swap(rhs[k], rhs[t]);
+      std::swap(perm[k], perm[t]);
+    }
+}
+
+} // namespace detail::simplification
+
 /// A quadric over R^n: Q(v) = vᵀAv + 2bᵀv + c, A symmetric n × n. The
-/// default (n = 0) is the zero quadric of any dimension.
-struct Generalized_quadric {
-  Eigen::MatrixXd a;
-  Eigen::VectorXd b;
+/// default (n = 0) is the zero quadric of any dimension. MaxDimension bounds
+/// n at compile time: the matrices are then stored inline (no allocation);
+/// Eigen::Dynamic (Generalized_quadric) stores them on the heap. Both compute
+/// alike, to the bit.
+template <int MaxDimension = Eigen::Dynamic>
+struct Basic_generalized_quadric {
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, MaxDimension, MaxDimension>;
+  using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, MaxDimension, 1>;
+  Matrix a;
+  Vector b;
   double c = 0;
 
   Eigen::Index dimension() const { return b.size(); }
 
-  friend Generalized_quadric operator+(const Generalized_quadric& x, const Generalized_quadric& y) {
+  friend Basic_generalized_quadric operator+(const Basic_generalized_quadric& x, const Basic_generalized_quadric& y) {
     if (x.dimension() == 0) return y;
     if (y.dimension() == 0) return x;
-    return {x.a + y.a, x.b + y.b, x.c + y.c};
+    Basic_generalized_quadric r = x;
+    r.a += y.a;
+    r.b += y.b;
+    r.c += y.c;
+    return r;
   }
 
   /// Q(v), clamped at 0.
-  double operator()(const Eigen::VectorXd& v) const {
+  template <class V>
+  double operator()(const V& v) const {
     if (dimension() == 0) return 0.0;
-    const double r = v.dot(a * v) + 2 * b.dot(v) + c;
+    const double r = detail::simplification::quadric_value(a, b, c, v);
     return r > 0 ? r : 0.0;
   }
 
   /// The quadric of the 2-plane through p, q, r in R^n (Garland & Heckbert
   /// 1998, with orthonormal e₁, e₂ spanning it), times w; zero when they are
   /// collinear.
-  static Generalized_quadric plane_through(const Eigen::VectorXd& p, const Eigen::VectorXd& q,
-                                           const Eigen::VectorXd& r, double w) {
+  static Basic_generalized_quadric plane_through(const Vector& p, const Vector& q, const Vector& r, double w) {
+    using detail::simplification::dot;
     const Eigen::Index n = p.size();
-    Generalized_quadric g{Eigen::MatrixXd::Zero(n, n), Eigen::VectorXd::Zero(n), 0.0};
-    Eigen::VectorXd e1 = q - p;
-    const double l1 = e1.norm();
+    Basic_generalized_quadric g{Matrix::Zero(n, n), Vector::Zero(n), 0.0};
+    Vector e1 = q - p;
+    const double l1 = std::sqrt(dot(e1, e1));
     if (!(l1 > 0)) return g;
     e1 /= l1;
-    Eigen::VectorXd e2 = r - p;
-    e2 -= e1.dot(e2) * e1;
-    const double l2 = e2.norm();
+    Vector e2 = r - p;
+    e2 -= dot(e1, e2) * e1;
+    const double l2 = std::sqrt(dot(e2, e2));
     if (!(l2 > 0)) return g;
     e2 /= l2;
-    const double p1 = p.dot(e1), p2 = p.dot(e2);
-    g.a = w * (Eigen::MatrixXd::Identity(n, n) - e1 * e1.transpose() - e2 * e2.transpose());
-    g.b = w * (p1 * e1 + p2 * e2 - p);
-    g.c = w * (p.squaredNorm() - p1 * p1 - p2 * p2);
+    const double p1 = dot(p, e1), p2 = dot(p, e2);
+    for (Eigen::Index j = 0; j < n; ++j)
+      for (Eigen::Index i = 0; i < n; ++i) g.a(i, j) = w * ((i == j ? 1.0 : 0.0) - e1[i] * e1[j] - e2[i] * e2[j]);
+    for (Eigen::Index i = 0; i < n; ++i) g.b[i] = w * (p1 * e1[i] + p2 * e2[i] - p[i]);
+    g.c = w * (dot(p, p) - p1 * p1 - p2 * p2);
     return g;
   }
 };
+
+/// The quadric of Attribute_quadrics<G> (heap-stored, any dimension).
+using Generalized_quadric = Basic_generalized_quadric<>;
 
 /// One attribute of Attribute_quadrics: how to read (and write back) a
 /// vertex's values, and their weight. Made by vertex_attribute(map, weight).
@@ -169,7 +301,13 @@ struct Attribute_state {
 /// and writes the survivor's optimal values into each writable map after
 /// every collapse. G is the mesh type (the maps are keyed by its vertex
 /// descriptor).
-template <class G>
+///
+/// MaxDimension (Eigen::Dynamic by default): with a number N ≥ 3 + the total
+/// number of attribute values (a colour: 6; colour and texture coordinates:
+/// 8), the per-vertex quadrics and every evaluation's matrices are stored
+/// inline — no allocation per evaluation, and the same results to the bit as
+/// with Eigen::Dynamic; start() refuses attributes that do not fit.
+template <class G, int MaxDimension = Eigen::Dynamic>
 struct Attribute_quadrics {
   using Vertex = vertex_descriptor_t<G>;
   /// The attributes, each a map and a weight: vertex_attribute(map, weight).
@@ -184,7 +322,8 @@ struct Attribute_quadrics {
   /// Filled by start() (simplify calls it): leave it alone.
   detail::simplification::Attribute_state<Vertex> state = {};
 
-  using Vertex_data = Generalized_quadric;
+  /// The per-vertex quadric (inline storage when MaxDimension is a number).
+  using Vertex_data = Basic_generalized_quadric<MaxDimension>;
 
   /// Values per vertex, all attributes together (known after start()).
   std::size_t dimension() const { return state.dimension; }
@@ -226,6 +365,11 @@ struct Attribute_quadrics {
       s.weight.insert(s.weight.end(), width[k], attributes[k].weight);
     }
     s.dimension = s.offset.back();
+    if (MaxDimension != Eigen::Dynamic && 3 + s.dimension > static_cast<std::size_t>(MaxDimension))
+      throw invalid_input("simplify: the attributes have " + std::to_string(s.dimension) +
+                          " values per vertex; Attribute_quadrics<G, " + std::to_string(MaxDimension) +
+                          "> holds at most " + std::to_string(MaxDimension - 3) +
+                          " (use a larger bound or Eigen::Dynamic)");
     s.values.assign(vb * s.dimension, 0.0);
     for (std::size_t k = 0; k < attributes.size(); ++k) {
       const auto& a = attributes[k];
@@ -247,30 +391,28 @@ struct Attribute_quadrics {
 
   /// A triangle's contribution (corners with their vertex indices, so that
   /// the attributes can be read).
-  Generalized_quadric face(std::size_t ia, const Eigen::Vector3d& a, std::size_t ib, const Eigen::Vector3d& b,
-                           std::size_t ic, const Eigen::Vector3d& c) const {
+  Vertex_data face(std::size_t ia, const Eigen::Vector3d& a, std::size_t ib, const Eigen::Vector3d& b, std::size_t ic,
+               const Eigen::Vector3d& c) const {
     const double w = area_weighted ? 0.5 * triangle_normal(a, b, c).norm() : 1.0;
-    return Generalized_quadric::plane_through(lift(ia, a), lift(ib, b), lift(ic, c), w);
+    return Vertex_data::plane_through(lift(ia, a), lift(ib, b), lift(ic, c), w);
   }
 
   /// The border quadric of Plane_quadrics, on the geometric coordinates.
-  Generalized_quadric border(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
-                             double weight) const {
+  Vertex_data border(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, double weight) const {
     const Quadric q = detail::simplification::border_plane(a, b, c, weight, area_weighted);
     const Eigen::Index n = 3 + static_cast<Eigen::Index>(dimension());
-    Generalized_quadric g{Eigen::MatrixXd::Zero(n, n), Eigen::VectorXd::Zero(n), q.c};
-    g.a.topLeftCorner<3, 3>() << q.a00, q.a01, q.a02, q.a01, q.a11, q.a12, q.a02, q.a12, q.a22;
-    g.b.head<3>() << q.b0, q.b1, q.b2;
+    Vertex_data g{Vertex_data::Matrix::Zero(n, n), Vertex_data::Vector::Zero(n), q.c};
+    g.a.template topLeftCorner<3, 3>() << q.a00, q.a01, q.a02, q.a01, q.a11, q.a12, q.a02, q.a12, q.a22;
+    g.b.template head<3>() << q.b0, q.b1, q.b2;
     return g;
   }
 
-  Placement place(const Generalized_quadric& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+  Placement place(const Vertex_data& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
     if (q.dimension() == 0) return {0.0, 0.5 * (a + b)};
-    Eigen::FullPivLU<Eigen::MatrixXd> lu(q.a);
-    lu.setThreshold(conditioning);
-    if (lu.isInvertible()) {
-      const Eigen::VectorXd v = lu.solve(-q.b);
-      const Eigen::Vector3d x = v.head<3>();
+    typename Vertex_data::Matrix m = q.a;
+    typename Vertex_data::Vector v = -q.b, perm(q.dimension());
+    if (detail::simplification::full_pivot_solve(m, v, perm, conditioning)) {
+      const Eigen::Vector3d x = v.template head<3>();
       const double limit = max_distance_factor * max_distance_factor * (b - a).squaredNorm();
       if (v.allFinite() && (x - 0.5 * (a + b)).squaredNorm() <= limit) return {q(v), x};
     }
@@ -283,17 +425,16 @@ struct Attribute_quadrics {
   }
 
   /// The cost at position x with the best attribute values there.
-  Placement fixed(const Generalized_quadric& q, const Eigen::Vector3d&, const Eigen::Vector3d&,
-                  const Eigen::Vector3d& x) const {
+  Placement fixed(const Vertex_data& q, const Eigen::Vector3d&, const Eigen::Vector3d&, const Eigen::Vector3d& x) const {
     if (q.dimension() == 0) return {0.0, x};
     return {q(best_at(q, x)), x};
   }
 
   /// After a collapse: the survivor's values, the minimizer at its position,
   /// written to each writable map.
-  void collapsed(std::size_t survivor, const Generalized_quadric& q, const Eigen::Vector3d& x) const {
+  void collapsed(std::size_t survivor, const Vertex_data& q, const Eigen::Vector3d& x) const {
     if (dimension() == 0 || q.dimension() == 0) return;
-    const Eigen::VectorXd v = best_at(q, x);
+    const typename Vertex_data::Vector v = best_at(q, x);
     std::vector<double> values;
     for (std::size_t k = 0; k < attributes.size(); ++k) {
       if (!attributes[k].write) continue;
@@ -306,10 +447,10 @@ struct Attribute_quadrics {
 
  private:
   // (x, weight · values of vertex v).
-  Eigen::VectorXd lift(std::size_t v, const Eigen::Vector3d& x) const {
+  typename Vertex_data::Vector lift(std::size_t v, const Eigen::Vector3d& x) const {
     const std::size_t k = dimension();
-    Eigen::VectorXd r(3 + static_cast<Eigen::Index>(k));
-    r.head<3>() = x;
+    typename Vertex_data::Vector r(3 + static_cast<Eigen::Index>(k));
+    r.template head<3>() = x;
     for (std::size_t i = 0; i < k; ++i) r[3 + static_cast<Eigen::Index>(i)] = state.values[v * k + i];
     return r;
   }
@@ -317,16 +458,22 @@ struct Attribute_quadrics {
   // (x, s) with s minimizing Q(x, ·): A_ss s = −(A_sx x + b_s). A_ss is
   // positive semi-definite; a tiny multiple of its trace on the diagonal
   // makes it definite where a vertex's faces do not constrain a value.
-  static Eigen::VectorXd best_at(const Generalized_quadric& q, const Eigen::Vector3d& x) {
+  static typename Vertex_data::Vector best_at(const Vertex_data& q, const Eigen::Vector3d& x) {
     const Eigen::Index n = q.dimension(), k = n - 3;
-    Eigen::VectorXd v(n);
-    v.head<3>() = x;
+    typename Vertex_data::Vector v(n);
+    v.template head<3>() = x;
     if (k == 0) return v;
-    Eigen::MatrixXd ass = q.a.bottomRightCorner(k, k);
-    const double tiny = 1e-12 * std::max(ass.trace(), std::numeric_limits<double>::min());
-    ass.diagonal().array() += tiny;
-    const Eigen::VectorXd rhs = -(q.a.bottomLeftCorner(k, 3) * x + q.b.tail(k));
-    v.tail(k) = ass.ldlt().solve(rhs);
+    typename Vertex_data::Matrix ass(k, k);
+    typename Vertex_data::Vector rhs(k), perm(k);
+    double trace = 0;
+    for (Eigen::Index i = 0; i < k; ++i) trace += q.a(3 + i, 3 + i);
+    const double tiny = 1e-12 * std::max(trace, std::numeric_limits<double>::min());
+    for (Eigen::Index j = 0; j < k; ++j) {
+      for (Eigen::Index i = 0; i < k; ++i) ass(i, j) = q.a(3 + i, 3 + j) + (i == j ? tiny : 0.0);
+      rhs[j] = -(q.a(3 + j, 0) * x[0] + q.a(3 + j, 1) * x[1] + q.a(3 + j, 2) * x[2] + q.b[3 + j]);
+    }
+    detail::simplification::semidefinite_solve(ass, rhs, perm);
+    v.tail(k) = rhs;
     return v;
   }
 };
