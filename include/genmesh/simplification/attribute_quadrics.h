@@ -46,7 +46,9 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <cmath>
@@ -60,128 +62,11 @@
 
 namespace genmesh {
 
-namespace detail::simplification {
-
-// Dense linear algebra on the few (3 + k)-sized matrices of the generalized
-// quadrics, written as plain loops over coefficients so that the result does
-// not depend on how the matrices are stored: Attribute_quadrics<G, N> (inline
-// storage, no allocation) and Attribute_quadrics<G> (heap) give the same bits.
-
-// x·y.
-template <class X, class Y>
-double dot(const X& x, const Y& y) {
-  double r = 0;
-  for (Eigen::Index i = 0; i < x.size(); ++i) r += x[i] * y[i];
-  return r;
-}
-
-// vᵀAv + 2bᵀv + c, A symmetric: its upper triangle read.
-template <class M, class V, class X>
-double quadric_value(const M& a, const V& b, double c, const X& v) {
-  const Eigen::Index n = b.size();
-  double r = c;
-  for (Eigen::Index j = 0; j < n; ++j) {
-    double s = 2 * b[j] + a(j, j) * v[j];
-    for (Eigen::Index i = 0; i < j; ++i) s += 2 * a(i, j) * v[i];
-    r += s * v[j];
-  }
-  return r;
-}
-
-// Solves m x = rhs in place (m and rhs overwritten; the solution in rhs) by
-// Gaussian elimination with full pivoting, as Eigen's FullPivLU: false when a
-// pivot is not above `threshold` times the largest (the first) pivot.
-// `perm` is scratch of m's size.
-template <class M, class V, class P>
-bool full_pivot_solve(M& m, V& rhs, P& perm, double threshold) {
-  const Eigen::Index n = rhs.size();
-  double first = 0;
-  for (Eigen::Index k = 0; k < n; ++k) perm[k] = static_cast<double>(k);
-  for (Eigen::Index k = 0; k < n; ++k) {
-    Eigen::Index pr = k, pc = k;
-    double best = -1;
-    for (Eigen::Index j = k; j < n; ++j)
-      for (Eigen::Index i = k; i < n; ++i)
-        if (std::abs(m(i, j)) > best) best = std::abs(m(i, j)), pr = i, pc = j;
-    if (k == 0) first = best;
-    if (!(best > threshold * first) || !(best > 0)) return false;
-    if (pr != k) {
-      for (Eigen::Index j = 0; j < n; ++j) std::swap(m(k, j), m(pr, j));
-      std::swap(rhs[k], rhs[pr]);
-    }
-    if (pc != k) {
-      for (Eigen::Index i = 0; i < n; ++i) std::swap(m(i, k), m(i, pc));
-      std::swap(perm[k], perm[pc]);
-    }
-    for (Eigen::Index i = k + 1; i < n; ++i) {
-      const double l = m(i, k) / m(k, k);
-      if (l == 0) continue;
-      for (Eigen::Index j = k + 1; j < n; ++j) m(i, j) -= l * m(k, j);
-      rhs[i] -= l * rhs[k];
-    }
-  }
-  for (Eigen::Index i = n - 1; i >= 0; --i) {
-    double s = rhs[i];
-    for (Eigen::Index j = i + 1; j < n; ++j) s -= m(i, j) * rhs[j];
-    rhs[i] = s / m(i, i);
-  }
-  // Undo the column swaps: unknown perm[k] is solution entry k.
-  for (Eigen::Index k = 0; k < n; ++k)
-    while (static_cast<Eigen::Index>(perm[k]) != k) {
-      const auto t = static_cast<Eigen::Index>(perm[k]);
-      std::swap(rhs[k], rhs[t]);
-      std::swap(perm[k], perm[t]);
-    }
-  return true;
-}
-
-// Solves m x = rhs for m symmetric positive semi-definite (LDLᵀ with
-// symmetric pivoting on the largest diagonal, as Eigen's LDLT; a zero pivot
-// gives a zero component). m and rhs are overwritten; the solution in rhs.
-template <class M, class V, class P>
-void semidefinite_solve(M& m, V& rhs, P& perm) {
-  const Eigen::Index n = rhs.size();
-  for (Eigen::Index k = 0; k < n; ++k) perm[k] = static_cast<double>(k);
-  for (Eigen::Index k = 0; k < n; ++k) {
-    Eigen::Index p = k;
-    for (Eigen::Index i = k + 1; i < n; ++i)
-      if (std::abs(m(i, i)) > std::abs(m(p, p))) p = i;
-    if (p != k) { // symmetric swap of k and p
-      for (Eigen::Index j = 0; j < n; ++j) std::swap(m(k, j), m(p, j));
-      for (Eigen::Index i = 0; i < n; ++i) std::swap(m(i, k), m(i, p));
-      std::swap(rhs[k], rhs[p]);
-      std::swap(perm[k], perm[p]);
-    }
-    const double d = m(k, k);
-    if (d == 0) continue;
-    for (Eigen::Index i = k + 1; i < n; ++i) {
-      const double l = m(i, k) / d;
-      if (l == 0) continue;
-      for (Eigen::Index j = k + 1; j < n; ++j) m(i, j) -= l * m(k, j);
-      rhs[i] -= l * rhs[k];
-      m(i, k) = l;
-    }
-  }
-  for (Eigen::Index i = n - 1; i >= 0; --i) {
-    double s = rhs[i];
-    for (Eigen::Index j = i + 1; j < n; ++j) s -= m(i, j) * rhs[j];
-    rhs[i] = m(i, i) != 0 ? s / m(i, i) : 0.0;
-  }
-  for (Eigen::Index k = 0; k < n; ++k)
-    while (static_cast<Eigen::Index>(perm[k]) != k) {
-      const auto t = static_cast<Eigen::Index>(perm[k]);
-      std::swap(rhs[k], rhs[t]);
-      std::swap(perm[k], perm[t]);
-    }
-}
-
-} // namespace detail::simplification
-
 /// A quadric over R^n: Q(v) = vᵀAv + 2bᵀv + c, A symmetric n × n. The
 /// default (n = 0) is the zero quadric of any dimension. MaxDimension bounds
 /// n at compile time: the matrices are then stored inline (no allocation);
-/// Eigen::Dynamic (Generalized_quadric) stores them on the heap. Both compute
-/// alike, to the bit.
+/// Eigen::Dynamic (Generalized_quadric) stores them on the heap. The same
+/// Eigen code runs on both, with the same results (tested).
 template <int MaxDimension = Eigen::Dynamic>
 struct Basic_generalized_quadric {
   using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, MaxDimension, MaxDimension>;
@@ -195,18 +80,13 @@ struct Basic_generalized_quadric {
   friend Basic_generalized_quadric operator+(const Basic_generalized_quadric& x, const Basic_generalized_quadric& y) {
     if (x.dimension() == 0) return y;
     if (y.dimension() == 0) return x;
-    Basic_generalized_quadric r = x;
-    r.a += y.a;
-    r.b += y.b;
-    r.c += y.c;
-    return r;
+    return {x.a + y.a, x.b + y.b, x.c + y.c};
   }
 
   /// Q(v), clamped at 0.
-  template <class V>
-  double operator()(const V& v) const {
+  double operator()(const Vector& v) const {
     if (dimension() == 0) return 0.0;
-    const double r = detail::simplification::quadric_value(a, b, c, v);
+    const double r = v.dot(a * v) + 2 * b.dot(v) + c;
     return r > 0 ? r : 0.0;
   }
 
@@ -214,23 +94,21 @@ struct Basic_generalized_quadric {
   /// 1998, with orthonormal e₁, e₂ spanning it), times w; zero when they are
   /// collinear.
   static Basic_generalized_quadric plane_through(const Vector& p, const Vector& q, const Vector& r, double w) {
-    using detail::simplification::dot;
     const Eigen::Index n = p.size();
     Basic_generalized_quadric g{Matrix::Zero(n, n), Vector::Zero(n), 0.0};
     Vector e1 = q - p;
-    const double l1 = std::sqrt(dot(e1, e1));
+    const double l1 = e1.norm();
     if (!(l1 > 0)) return g;
     e1 /= l1;
     Vector e2 = r - p;
-    e2 -= dot(e1, e2) * e1;
-    const double l2 = std::sqrt(dot(e2, e2));
+    e2 -= e1.dot(e2) * e1;
+    const double l2 = e2.norm();
     if (!(l2 > 0)) return g;
     e2 /= l2;
-    const double p1 = dot(p, e1), p2 = dot(p, e2);
-    for (Eigen::Index j = 0; j < n; ++j)
-      for (Eigen::Index i = 0; i < n; ++i) g.a(i, j) = w * ((i == j ? 1.0 : 0.0) - e1[i] * e1[j] - e2[i] * e2[j]);
-    for (Eigen::Index i = 0; i < n; ++i) g.b[i] = w * (p1 * e1[i] + p2 * e2[i] - p[i]);
-    g.c = w * (dot(p, p) - p1 * p1 - p2 * p2);
+    const double p1 = p.dot(e1), p2 = p.dot(e2);
+    g.a = w * (Matrix::Identity(n, n) - e1 * e1.transpose() - e2 * e2.transpose());
+    g.b = w * (p1 * e1 + p2 * e2 - p);
+    g.c = w * (p.squaredNorm() - p1 * p1 - p2 * p2);
     return g;
   }
 };
@@ -409,9 +287,10 @@ struct Attribute_quadrics {
 
   Placement place(const Vertex_data& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
     if (q.dimension() == 0) return {0.0, 0.5 * (a + b)};
-    typename Vertex_data::Matrix m = q.a;
-    typename Vertex_data::Vector v = -q.b, perm(q.dimension());
-    if (detail::simplification::full_pivot_solve(m, v, perm, conditioning)) {
+    Eigen::FullPivLU<typename Vertex_data::Matrix> lu(q.a);
+    lu.setThreshold(conditioning);
+    if (lu.isInvertible()) {
+      const typename Vertex_data::Vector v = lu.solve(-q.b);
       const Eigen::Vector3d x = v.template head<3>();
       const double limit = max_distance_factor * max_distance_factor * (b - a).squaredNorm();
       if (v.allFinite() && (x - 0.5 * (a + b)).squaredNorm() <= limit) return {q(v), x};
@@ -463,17 +342,11 @@ struct Attribute_quadrics {
     typename Vertex_data::Vector v(n);
     v.template head<3>() = x;
     if (k == 0) return v;
-    typename Vertex_data::Matrix ass(k, k);
-    typename Vertex_data::Vector rhs(k), perm(k);
-    double trace = 0;
-    for (Eigen::Index i = 0; i < k; ++i) trace += q.a(3 + i, 3 + i);
-    const double tiny = 1e-12 * std::max(trace, std::numeric_limits<double>::min());
-    for (Eigen::Index j = 0; j < k; ++j) {
-      for (Eigen::Index i = 0; i < k; ++i) ass(i, j) = q.a(3 + i, 3 + j) + (i == j ? tiny : 0.0);
-      rhs[j] = -(q.a(3 + j, 0) * x[0] + q.a(3 + j, 1) * x[1] + q.a(3 + j, 2) * x[2] + q.b[3 + j]);
-    }
-    detail::simplification::semidefinite_solve(ass, rhs, perm);
-    v.tail(k) = rhs;
+    typename Vertex_data::Matrix ass = q.a.bottomRightCorner(k, k);
+    const double tiny = 1e-12 * std::max(ass.trace(), std::numeric_limits<double>::min());
+    ass.diagonal().array() += tiny;
+    const typename Vertex_data::Vector rhs = -(q.a.bottomLeftCorner(k, 3) * x + q.b.tail(k));
+    v.tail(k) = ass.ldlt().solve(rhs);
     return v;
   }
 };
