@@ -616,36 +616,47 @@ public:
       // The point minimizing the sum of the squared areas of v's
       // triangles (pmp-library's rule): A x = rhs with
       // A = Σ w (|d|² I − d dᵀ), rhs = Σ w (|d|² a − d (d·a)),
-      // w = 1/|d|; A symmetric, solved by its adjugate. One pass over
-      // the ring for the normal and the system, each neighbour read once.
-      double s = 0, m00 = 0, m01 = 0, m02 = 0, m11 = 0, m12 = 0, m22 = 0;
-      Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
-      Eigen::Vector3d a = nb(0);
+      // w = 1/|d|; A symmetric, solved by its adjugate. In coordinates
+      // relative to p (a' = a − p; A does not change, and x is the move
+      // itself), on plain scalars: one pass over the ring for the normal
+      // and the system, each neighbour read once (Eigen's 3-vectors cost
+      // twice the instructions here).
+      const double px = p.x(), py = p.y(), pz = p.z();
+      double s = 0, m00 = 0, m01 = 0, m02 = 0, m11 = 0, m12 = 0, m22 = 0, r0 = 0, r1 = 0, r2 = 0;
+      double n0 = 0, n1 = 0, n2 = 0;
+      const Eigen::Vector3d& first = nb(0);
+      const double fx = first.x() - px, fy = first.y() - py, fz = first.z() - pz;
+      double ax = fx, ay = fy, az = fz;
       for (std::uint32_t j = 0; j < k; ++j) {
-        const Eigen::Vector3d c = nb(j + 1 == k ? 0 : j + 1);
-        const Eigen::Vector3d d = c - a;
-        normal += d.cross(a - p);
-        const double l2 = d.squaredNorm();
+        double cx = fx, cy = fy, cz = fz;
+        if (j + 1 < k) {
+          const Eigen::Vector3d& c = nb(j + 1);
+          cx = c.x() - px, cy = c.y() - py, cz = c.z() - pz;
+        }
+        const double dx = cx - ax, dy = cy - ay, dz = cz - az;
+        n0 += dy * az - dz * ay, n1 += dz * ax - dx * az, n2 += dx * ay - dy * ax; // d × a'
+        const double l2 = dx * dx + dy * dy + dz * dz;
         if (l2 > 0) {
           const double l = std::sqrt(l2), w = 1.0 / l;
           s += l;
-          const Eigen::Vector3d wd = w * d;
-          m00 += wd.x() * d.x(), m01 += wd.x() * d.y(), m02 += wd.x() * d.z();
-          m11 += wd.y() * d.y(), m12 += wd.y() * d.z(), m22 += wd.z() * d.z();
-          rhs += l * a - wd * d.dot(a);
+          const double wx = w * dx, wy = w * dy, wz = w * dz;
+          m00 += wx * dx, m01 += wx * dy, m02 += wx * dz;
+          m11 += wy * dy, m12 += wy * dz, m22 += wz * dz;
+          const double t = wx * ax + wy * ay + wz * az; // w (d·a')
+          r0 += l * ax - t * dx, r1 += l * ay - t * dy, r2 += l * az - t * dz;
         }
-        a = c;
+        ax = cx, ay = cy, az = cz;
       }
+      normal = Eigen::Vector3d(n0, n1, n2);
       const double a00 = s - m00, a11 = s - m11, a22 = s - m22, a01 = -m01, a02 = -m02, a12 = -m12;
       const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
       const double det = a00 * c00 + a01 * c01 + a02 * c02;
       const double scale2 = a00 * a00 + a11 * a11 + a22 * a22 + 2 * (a01 * a01 + a02 * a02 + a12 * a12);
       if (std::abs(det) > 1e-12 * scale2 * std::sqrt(scale2)) {
         const double c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
-        const Eigen::Vector3d x(c00 * rhs.x() + c01 * rhs.y() + c02 * rhs.z(),
-                                c01 * rhs.x() + c11 * rhs.y() + c12 * rhs.z(),
-                                c02 * rhs.x() + c12 * rhs.y() + c22 * rhs.z());
-        u = x / det - p;
+        const double inv = 1.0 / det;
+        u = Eigen::Vector3d((c00 * r0 + c01 * r1 + c02 * r2) * inv, (c01 * r0 + c11 * r1 + c12 * r2) * inv,
+                            (c02 * r0 + c12 * r1 + c22 * r2) * inv);
         solved = true;
       }
     } else {

@@ -616,7 +616,7 @@ class Collapser {
     }
     const double m = n > 0 ? sum / static_cast<double>(n) : 0.0;
     const double cell = m > 0 ? 4.0 * m : 1.0;
-    grid_.reset(cell, faces_);
+    grid_.reset(cell, slot_.size());
     std::vector<std::pair<std::uint64_t, std::uint32_t>> order;
     order.reserve(slot_.size());
     for (std::size_t s = 0; s < slot_.size(); ++s) {
@@ -677,9 +677,8 @@ class Collapser {
         const std::uint32_t is = static_cast<std::uint32_t>(vi(source(x, g_))),
                             iq = static_cast<std::uint32_t>(vi(q)),
                             iw = static_cast<std::uint32_t>(vi(target(next(x, g_), g_)));
-        const Box old = slot_[sf].box();
         slot_[sf].set(Box::of(pos_[is], pos_[iq], pos_[iw]), {is, iq, iw});
-        if (!rebuild) grid_.move(static_cast<std::uint32_t>(sf), old, slot_[sf].box());
+        if (!rebuild) grid_.insert(static_cast<std::uint32_t>(sf), slot_[sf].box());
       }
       x = opposite(next(x, g_), g_);
     } while (x != start);
@@ -717,38 +716,37 @@ class Collapser {
     // Against the live faces near the new ones (one query for the union of
     // their boxes; a candidate is tested exactly against each new face whose
     // box its box meets; faces around p or q are skipped: their corners say
-    // so). A face listed in several of the query's cells is tested in the
-    // first one its box's cells share with the query's (Face_grid::first_shared).
+    // so). The grid reports each face once.
     fresh_box_.resize(fresh_.size());
     Box all = Box::of(fresh_[0].p[0], fresh_[0].p[1], fresh_[0].p[2]);
     for (std::size_t i = 0; i < fresh_.size(); ++i) {
-      fresh_box_[i] = Box::of(fresh_[i].p[0], fresh_[i].p[1], fresh_[i].p[2]);
-      all.lo = all.lo.cwiseMin(fresh_box_[i].lo);
-      all.hi = all.hi.cwiseMax(fresh_box_[i].hi);
+      const Box b = Box::of(fresh_[i].p[0], fresh_[i].p[1], fresh_[i].p[2]);
+      fresh_box_[i] = Float_box::around(b);
+      all.lo = all.lo.cwiseMin(b.lo);
+      all.hi = all.hi.cwiseMax(b.hi);
     }
-    // Two passes: the slots pick the candidates (asking for their corners'
-    // points as they go), then the tests read the points, whose cache misses
-    // have overlapped by then.
+    const Float_box all_f = Float_box::around(all);
+    // Two passes: the grid's entries pick the faces whose box may meet
+    // the new ones' (without reading them), their slots pick the candidates
+    // (asking for their corners' points as they go), then the tests read
+    // the points, whose cache misses have overlapped by then.
+    near_.clear();
+    grid_.query(all, near_);
     candidates_.clear();
-    grid_.query(all, [&](Face_grid::Cell at, const Face_grid::Range& range, std::vector<std::uint32_t>& cell) {
+    {
       // Nearly every slot read is a cache miss: ask for it a few faces ahead.
-      // Entries of dead faces, and of faces that have left the cell, are
-      // dropped on the way (dead ones were a quarter of the entries read).
       constexpr std::size_t ahead = 8;
-      const std::size_t n = cell.size();
-      for (std::size_t k = 0; k < std::min(ahead, n); ++k) prefetch(&slot_[cell[k]]);
-      std::size_t kept = 0;
+      const std::size_t n = near_.size();
+      for (std::size_t k = 0; k < std::min(ahead, n); ++k) prefetch(&slot_[near_[k]]);
       for (std::size_t k = 0; k < n; ++k) {
-        if (k + ahead < n) prefetch(&slot_[cell[k + ahead]]);
-        const std::uint32_t f = cell[k];
-        if (pick_candidate(f, ip, iq, at, range, all)) cell[kept++] = f;
+        if (k + ahead < n) prefetch(&slot_[near_[k + ahead]]);
+        pick_candidate(near_[k], ip, iq, all_f);
       }
-      cell.resize(kept);
-    });
+    }
     for (const auto& [f, mask] : candidates_) {
       const Mesh_triangle<std::uint32_t> u = slot_triangle(f);
       for (std::size_t i = 0; i < fresh_.size(); ++i)
-        if ((i >= 64 || (mask >> i) & 1u) && slot_[f].overlaps(fresh_box_[i]) && !separated(i, u) &&
+        if ((i < 64 ? (mask >> i) & 1u : slot_[f].overlaps(fresh_box_[i])) && !separated(i, u) &&
             exact_test(fresh_[i], u))
           return false;
     }
@@ -761,26 +759,20 @@ class Collapser {
 #endif
   }
 
-  // Lists candidate face f, met in cell `at` of a query of cells `range`,
-  // with the new faces whose boxes its box meets (bit i: new face i; new
-  // faces from the 64th on are always tested), unless it is dead, around p
-  // or q, meets none, or is met in an earlier cell of the query. False
-  // when the cell's entry is stale: f is dead or its box has left the cell.
-  bool pick_candidate(std::uint32_t f, std::uint32_t ip, std::uint32_t iq, Face_grid::Cell at,
-                      const Face_grid::Range& range, const Box& all) {
+  // Lists candidate face f with the new faces whose boxes its box meets
+  // (bit i: new face i; new faces from the 64th on are always tested),
+  // unless it is dead, around p or q, or meets none.
+  void pick_candidate(std::uint32_t f, std::uint32_t ip, std::uint32_t iq, const Float_box& all) {
     const Face_slot& sl = slot_[f];
-    if (!sl.alive()) return false;
-    if (!sl.overlaps(all)) return Face_grid::covers(grid_.range_of(sl.box()), at);
+    if (!sl.alive() || !sl.overlaps(all)) return;
     for (const std::uint32_t v : sl.v)
-      if (v == ip || v == iq) return true;
-    if (!Face_grid::first_shared(grid_.range_of(sl.box()), range, at)) return true;
+      if (v == ip || v == iq) return;
     std::uint64_t mask = 0;
     for (std::size_t i = 0; i < std::min<std::size_t>(fresh_.size(), 64); ++i)
       if (sl.overlaps(fresh_box_[i])) mask |= std::uint64_t{1} << i;
-    if (mask == 0 && fresh_.size() <= 64) return true;
+    if (mask == 0 && fresh_.size() <= 64) return;
     for (const std::uint32_t v : sl.v) prefetch(&pos_[v]);
     candidates_.push_back({f, mask});
-    return true;
   }
 
   // faces_intersect, counted.
@@ -1004,8 +996,12 @@ class Collapser {
       }
     }
     if (o_.prevent_self_intersections) {
-      if (top) slot_[slot_of_[fi(face(h, g_))]].v[0] = Face_slot::dead;
-      if (bottom) slot_[slot_of_[fi(face(oh, g_))]].v[0] = Face_slot::dead;
+      for (const H side : {h, oh}) {
+        if (border(side)) continue;
+        const std::uint32_t sf = slot_of_[fi(face(side, g_))];
+        slot_[sf].v[0] = Face_slot::dead;
+        grid_.remove(sf);
+      }
     }
     vis_.on_collapse_placement(h, std::as_const(pl.position), pl.cost, std::as_const(g_));
     Point_writer writer{{}, this, pl.position};
@@ -1134,29 +1130,18 @@ class Collapser {
   // (read by a candidate's exact test without walking the mesh; v[0] ==
   // dead once it is gone).
   struct Face_slot {
-    float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    Float_box b;
     static constexpr std::uint32_t dead = ~std::uint32_t{0};
     std::uint32_t v[3] = {dead, 0, 0};
-    Box box() const {
-      return {Eigen::Vector3d(lo[0], lo[1], lo[2]), Eigen::Vector3d(hi[0], hi[1], hi[2])};
-    }
+    Box box() const { return b.box(); }
     bool alive() const { return v[0] != dead; }
-    void set(const Box& b, const std::array<std::uint32_t, 3>& ids) {
+    void set(const Box& box, const std::array<std::uint32_t, 3>& ids) {
       v[0] = ids[0];
       v[1] = ids[1];
       v[2] = ids[2];
-      for (int i = 0; i < 3; ++i) {
-        lo[i] = static_cast<float>(b.lo[i]);
-        if (static_cast<double>(lo[i]) > b.lo[i]) lo[i] = std::nextafter(lo[i], -std::numeric_limits<float>::infinity());
-        hi[i] = static_cast<float>(b.hi[i]);
-        if (static_cast<double>(hi[i]) < b.hi[i]) hi[i] = std::nextafter(hi[i], std::numeric_limits<float>::infinity());
-      }
+      b = Float_box::around(box);
     }
-    bool overlaps(const Box& b) const {
-      for (int i = 0; i < 3; ++i)
-        if (static_cast<double>(lo[i]) > b.hi[i] || b.lo[i] > static_cast<double>(hi[i])) return false;
-      return true;
-    }
+    bool overlaps(const Float_box& o) const { return b.overlaps(o); }
   };
   std::vector<Face_slot> slot_; // in Morton order (see build_grid)
   static constexpr std::uint32_t no_slot = ~std::uint32_t{0};
@@ -1164,7 +1149,8 @@ class Collapser {
   std::vector<std::uint32_t> slot_face_; // by slot: its face index
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
   std::vector<H> around_;           // the survivor's incoming halfedges
-  std::vector<Box> fresh_box_;
+  std::vector<Float_box> fresh_box_; // rounded outwards
+  std::vector<std::uint32_t> near_; // slots a grid query found
   std::vector<std::pair<std::uint32_t, std::uint64_t>> candidates_; // slot, new faces its box meets
   std::vector<Fresh_plane> fresh_plane_;
   std::size_t exact_tests_ = 0; // faces_intersect calls (the filters decided the rest)
