@@ -362,4 +362,90 @@ void register_curve() {
 
 const bool registered = (register_all(), register_curve(), true);
 
+// ---- Attribute simplification (docs/benchmarks.md, "Attribute simplification, session 6")
+// Attribute_quadrics against plain Plane_quadrics on meshes with per-vertex
+// colours, → 10% on Halfedge_mesh (guard on, as every row above):
+// - dino.off (7,828 faces) with its own COFF colours (4 uchar values per
+//   vertex, uniform grey: the cost does not depend on the values), weight 1
+//   per full scale as `genmesh simplify --attributes 1` gives;
+// - armadillo.off (51,996 faces) coloured by position (r, g, b: x, y, z
+//   scaled into [0, 1] over the bounding box), weight 1.
+// Rows: Plane_quadrics (the colours not used); Attribute_quadrics<G>
+// (heap-stored quadrics: session 5's code, allocations in every evaluation);
+// Attribute_quadrics<G, 8> (inline storage, same results to the bit). The
+// colour map holds Eigen vectors of at most 4 values (inline too), so the
+// rows differ only in the quadrics. Timed: simplify() alone, thread CPU
+// time; counters faces_out and peak_MB (heap peak above the input mesh).
+//
+//   genmesh_benchmarks --benchmark_filter=AttributeSimplification --benchmark_repetitions=5
+//                      --benchmark_report_aggregates_only=true
+struct Coloured_input {
+  genmesh::Polygon_soup soup;
+  genmesh::Soup_attribute colour;
+  double weight = 1;
+};
+
+const Coloured_input& coloured_input(bool dino) {
+  static const Coloured_input d = [] {
+    Coloured_input c;
+    c.soup = genmesh::read_soup(mesh_path("dino.off"));
+    c.colour = *c.soup.vertex_attribute("color");
+    c.weight = 1.0 / 255; // uchar colours in units of full scale
+    return c;
+  }();
+  static const Coloured_input a = [] {
+    Coloured_input c;
+    c.soup = soup(Input::armadillo);
+    Eigen::AlignedBox3d box;
+    for (const auto& p : c.soup.points) box.extend(p);
+    c.colour = {"color", {"red", "green", "blue"}, genmesh::Scalar_type::float64, {}};
+    for (const auto& p : c.soup.points)
+      for (int k = 0; k < 3; ++k) c.colour.values.push_back((p[k] - box.min()[k]) / box.sizes()[k]);
+    return c;
+  }();
+  return dino ? d : a;
+}
+
+// Policy: Plane_quadrics or Attribute_quadrics<Halfedge_mesh, N>.
+template <class Policy>
+void attribute_row(benchmark::State& state, bool dino) {
+  const Coloured_input& in = coloured_input(dino);
+  using Colour = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 4, 1>;
+  long long peak = 0;
+  std::size_t faces_out = 0;
+  for (auto _ : state) {
+    Halfedge_mesh g;
+    genmesh::build_mesh(in.soup, g, {.check = false});
+    auto colour = genmesh::scratch_property<Colour>(genmesh::vertex_index, g);
+    genmesh::read_vertex_attribute(in.colour, g, colour);
+    genmesh::Simplification_options<Policy> o{.target_ratio = 0.1};
+    if constexpr (!std::is_same_v<Policy, genmesh::Plane_quadrics>)
+      o.policy.attributes = {genmesh::vertex_attribute(colour, in.weight, "color")};
+    const long long before = genmesh_bench::live_bytes();
+    genmesh_bench::reset_peak();
+    const double t0 = thread_seconds();
+    genmesh::simplify(g, o);
+    const double t1 = thread_seconds();
+    peak = std::max(peak, genmesh_bench::peak_bytes() - before);
+    faces_out = num_faces(g);
+    state.SetIterationTime(t1 - t0);
+  }
+  state.counters["faces_out"] = static_cast<double>(faces_out);
+  state.counters["peak_MB"] = static_cast<double>(peak) / 1e6;
+}
+
+void register_attribute_rows() {
+  for (const bool dino : {true, false}) {
+    const std::string mesh = dino ? "dino" : "armadillo";
+    register_row("AttributeSimplification/" + mesh + "/Plane_quadrics",
+                 [=](benchmark::State& s) { attribute_row<genmesh::Plane_quadrics>(s, dino); });
+    register_row("AttributeSimplification/" + mesh + "/Attribute_quadrics_heap",
+                 [=](benchmark::State& s) { attribute_row<genmesh::Attribute_quadrics<Halfedge_mesh>>(s, dino); });
+    register_row("AttributeSimplification/" + mesh + "/Attribute_quadrics_inline8",
+                 [=](benchmark::State& s) { attribute_row<genmesh::Attribute_quadrics<Halfedge_mesh, 8>>(s, dino); });
+  }
+}
+
+const bool attribute_rows_registered = (register_attribute_rows(), true);
+
 } // namespace

@@ -724,7 +724,7 @@ struct Coloured_run {
   double moved = 0;             // largest distance of a survivor from its input point
 };
 
-template <class G>
+template <class G, int MaxDimension = Eigen::Dynamic>
 Coloured_run simplify_coloured(const Polygon_soup& in, bool with_attributes) {
   using V = genmesh::vertex_descriptor_t<G>;
   G g = mesh_of<G>(in);
@@ -742,7 +742,7 @@ Coloured_run simplify_coloured(const Polygon_soup& in, bool with_attributes) {
   }
   genmesh::Simplification_result r;
   if (with_attributes) {
-    r = genmesh::simplify(g, genmesh::Simplification_options<genmesh::Attribute_quadrics<G>>{
+    r = genmesh::simplify(g, genmesh::Simplification_options<genmesh::Attribute_quadrics<G, MaxDimension>>{
                                  .target_ratio = 0.1,
                                  .policy = {.attributes = {genmesh::vertex_attribute(colour, 0.2, "colour"),
                                                            genmesh::vertex_attribute(uv, 0.5, "uv"),
@@ -790,6 +790,23 @@ TYPED_TEST(Simplification, AttributeQuadricsOverSeveralPropertyMaps) {
   const Coloured_run ref = simplify_coloured<genmesh_test::Halfedge_mesh>(in, true);
   expect_same_soup(ours.soup, ref.soup, "attribute quadrics, several maps");
   EXPECT_EQ(ours.values, ref.values);
+
+  // The inline-storage quadrics (3 + 6 values fit in 9) give the same bits.
+  const Coloured_run inline_storage = simplify_coloured<TypeParam, 9>(in, true);
+  expect_same_soup(inline_storage.soup, ours.soup, "attribute quadrics, inline storage");
+  EXPECT_EQ(inline_storage.values, ours.values);
+  // A bound the attributes do not fit is refused before any change.
+  TypeParam g = mesh_of<TypeParam>(in);
+  auto uv = genmesh::scratch_property<std::array<double, 2>>(genmesh::vertex_index, g);
+  const auto faces = num_faces(g);
+  try {
+    genmesh::simplify(g, genmesh::Simplification_options<genmesh::Attribute_quadrics<TypeParam, 4>>{
+                             .target_ratio = 0.1, .policy = {.attributes = {genmesh::vertex_attribute(uv, 1.0, "uv")}}});
+    ADD_FAILURE() << "2 values accepted by Attribute_quadrics<G, 4>";
+  } catch (const genmesh::invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("holds at most 1"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(num_faces(g), faces);
 }
 
 // ---------------------------------------------------------------------------

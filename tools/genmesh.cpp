@@ -914,8 +914,11 @@ struct Cli_attributes {
 
   // The quadric policy over the weighted ones. An integer colour (0..255)
   // counts in units of full scale, as a float colour in [0, 1] does.
-  genmesh::Attribute_quadrics<Mesh> policy() const {
-    genmesh::Attribute_quadrics<Mesh> q;
+  // N: the bound of Attribute_quadrics<Mesh, N> (inline quadrics when 3 +
+  // weighted_width() fits).
+  template <int N = Eigen::Dynamic>
+  genmesh::Attribute_quadrics<Mesh, N> policy() const {
+    genmesh::Attribute_quadrics<Mesh, N> q;
     for (std::size_t k = 0; k < channels.size(); ++k) {
       if (weights[k] <= 0) continue;
       const bool byte_colour = channels[k]->name == "color" && channels[k]->type != genmesh::Scalar_type::float32 &&
@@ -924,6 +927,14 @@ struct Cli_attributes {
                                                        channels[k]->name));
     }
     return q;
+  }
+
+  // Values per vertex of the attributes in the quadrics.
+  std::size_t weighted_width() const {
+    std::size_t w = 0;
+    for (std::size_t k = 0; k < channels.size(); ++k)
+      if (weights[k] > 0) w += channels[k]->width();
+    return w;
   }
 
   // The mesh's soup with the attributes' current values.
@@ -968,7 +979,10 @@ int cmd_simplify(const Args& a) {
       if (a.policy == "probabilistic") r = simplify_with<genmesh::Probabilistic_quadrics>(mesh, a, progress);
       else if (a.policy == "length") r = simplify_with<genmesh::Edge_length>(mesh, a, progress);
       else if (a.policy == "lindstrom-turk") r = simplify_with<genmesh::Lindstrom_turk>(mesh, a, progress);
-      else if (auto q = attributes.policy(); !q.attributes.empty()) r = simplify_with(mesh, a, progress, std::move(q));
+      // Up to 5 values (a colour and texture coordinates) the quadrics are stored inline.
+      else if (const std::size_t w = attributes.weighted_width(); w > 0 && w <= 5)
+        r = simplify_with(mesh, a, progress, attributes.template policy<8>());
+      else if (w > 5) r = simplify_with(mesh, a, progress, attributes.policy());
       else r = simplify_with<genmesh::Plane_quadrics>(mesh, a, progress);
     } catch (const genmesh::invalid_input& e) {
       // simplify refused the mesh ("face 0 is not a triangle"): name the file (issue 14).

@@ -25,6 +25,10 @@
 //       .target_ratio = 0.1,
 //       .policy = {.attributes = {genmesh::vertex_attribute(colour, 0.1), genmesh::vertex_attribute(uv, 1.0)}}});
 //
+// Attribute_quadrics<G, N> with N ≥ 3 + the number of values stores the
+// quadrics inline (no allocation per evaluation) and gives the same results
+// to the bit as the heap-stored default Attribute_quadrics<G>.
+//
 // Before the first collapse every vertex's values are read; after each
 // collapse the survivor's optimal values are written back into each writable
 // map (the removed vertex's entries are left as they were). The cost is the
@@ -46,9 +50,11 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <functional>
@@ -61,22 +67,28 @@
 namespace genmesh {
 
 /// A quadric over R^n: Q(v) = vᵀAv + 2bᵀv + c, A symmetric n × n. The
-/// default (n = 0) is the zero quadric of any dimension.
-struct Generalized_quadric {
-  Eigen::MatrixXd a;
-  Eigen::VectorXd b;
+/// default (n = 0) is the zero quadric of any dimension. MaxDimension bounds
+/// n at compile time: the matrices are then stored inline (no allocation);
+/// Eigen::Dynamic (Generalized_quadric) stores them on the heap. The same
+/// Eigen code runs on both, with the same results (tested).
+template <int MaxDimension = Eigen::Dynamic>
+struct Basic_generalized_quadric {
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, MaxDimension, MaxDimension>;
+  using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, MaxDimension, 1>;
+  Matrix a;
+  Vector b;
   double c = 0;
 
   Eigen::Index dimension() const { return b.size(); }
 
-  friend Generalized_quadric operator+(const Generalized_quadric& x, const Generalized_quadric& y) {
+  friend Basic_generalized_quadric operator+(const Basic_generalized_quadric& x, const Basic_generalized_quadric& y) {
     if (x.dimension() == 0) return y;
     if (y.dimension() == 0) return x;
     return {x.a + y.a, x.b + y.b, x.c + y.c};
   }
 
   /// Q(v), clamped at 0.
-  double operator()(const Eigen::VectorXd& v) const {
+  double operator()(const Vector& v) const {
     if (dimension() == 0) return 0.0;
     const double r = v.dot(a * v) + 2 * b.dot(v) + c;
     return r > 0 ? r : 0.0;
@@ -85,26 +97,28 @@ struct Generalized_quadric {
   /// The quadric of the 2-plane through p, q, r in R^n (Garland & Heckbert
   /// 1998, with orthonormal e₁, e₂ spanning it), times w; zero when they are
   /// collinear.
-  static Generalized_quadric plane_through(const Eigen::VectorXd& p, const Eigen::VectorXd& q,
-                                           const Eigen::VectorXd& r, double w) {
+  static Basic_generalized_quadric plane_through(const Vector& p, const Vector& q, const Vector& r, double w) {
     const Eigen::Index n = p.size();
-    Generalized_quadric g{Eigen::MatrixXd::Zero(n, n), Eigen::VectorXd::Zero(n), 0.0};
-    Eigen::VectorXd e1 = q - p;
+    Basic_generalized_quadric g{Matrix::Zero(n, n), Vector::Zero(n), 0.0};
+    Vector e1 = q - p;
     const double l1 = e1.norm();
     if (!(l1 > 0)) return g;
     e1 /= l1;
-    Eigen::VectorXd e2 = r - p;
+    Vector e2 = r - p;
     e2 -= e1.dot(e2) * e1;
     const double l2 = e2.norm();
     if (!(l2 > 0)) return g;
     e2 /= l2;
     const double p1 = p.dot(e1), p2 = p.dot(e2);
-    g.a = w * (Eigen::MatrixXd::Identity(n, n) - e1 * e1.transpose() - e2 * e2.transpose());
+    g.a = w * (Matrix::Identity(n, n) - e1 * e1.transpose() - e2 * e2.transpose());
     g.b = w * (p1 * e1 + p2 * e2 - p);
     g.c = w * (p.squaredNorm() - p1 * p1 - p2 * p2);
     return g;
   }
 };
+
+/// The quadric of Attribute_quadrics<G> (heap-stored, any dimension).
+using Generalized_quadric = Basic_generalized_quadric<>;
 
 /// One attribute of Attribute_quadrics: how to read (and write back) a
 /// vertex's values, and their weight. Made by vertex_attribute(map, weight).
@@ -169,7 +183,13 @@ struct Attribute_state {
 /// and writes the survivor's optimal values into each writable map after
 /// every collapse. G is the mesh type (the maps are keyed by its vertex
 /// descriptor).
-template <class G>
+///
+/// MaxDimension (Eigen::Dynamic by default): with a number N ≥ 3 + the total
+/// number of attribute values (a colour: 6; colour and texture coordinates:
+/// 8), the per-vertex quadrics and every evaluation's matrices are stored
+/// inline — no allocation per evaluation, and the same results to the bit as
+/// with Eigen::Dynamic; start() refuses attributes that do not fit.
+template <class G, int MaxDimension = Eigen::Dynamic>
 struct Attribute_quadrics {
   using Vertex = vertex_descriptor_t<G>;
   /// The attributes, each a map and a weight: vertex_attribute(map, weight).
@@ -184,7 +204,8 @@ struct Attribute_quadrics {
   /// Filled by start() (simplify calls it): leave it alone.
   detail::simplification::Attribute_state<Vertex> state = {};
 
-  using Vertex_data = Generalized_quadric;
+  /// The per-vertex quadric (inline storage when MaxDimension is a number).
+  using Vertex_data = Basic_generalized_quadric<MaxDimension>;
 
   /// Values per vertex, all attributes together (known after start()).
   std::size_t dimension() const { return state.dimension; }
@@ -226,6 +247,11 @@ struct Attribute_quadrics {
       s.weight.insert(s.weight.end(), width[k], attributes[k].weight);
     }
     s.dimension = s.offset.back();
+    if (MaxDimension != Eigen::Dynamic && 3 + s.dimension > static_cast<std::size_t>(MaxDimension))
+      throw invalid_input("simplify: the attributes have " + std::to_string(s.dimension) +
+                          " values per vertex; Attribute_quadrics<G, " + std::to_string(MaxDimension) +
+                          "> holds at most " + std::to_string(MaxDimension - 3) +
+                          " (use a larger bound or Eigen::Dynamic)");
     s.values.assign(vb * s.dimension, 0.0);
     for (std::size_t k = 0; k < attributes.size(); ++k) {
       const auto& a = attributes[k];
@@ -247,30 +273,29 @@ struct Attribute_quadrics {
 
   /// A triangle's contribution (corners with their vertex indices, so that
   /// the attributes can be read).
-  Generalized_quadric face(std::size_t ia, const Eigen::Vector3d& a, std::size_t ib, const Eigen::Vector3d& b,
-                           std::size_t ic, const Eigen::Vector3d& c) const {
+  Vertex_data face(std::size_t ia, const Eigen::Vector3d& a, std::size_t ib, const Eigen::Vector3d& b, std::size_t ic,
+               const Eigen::Vector3d& c) const {
     const double w = area_weighted ? 0.5 * triangle_normal(a, b, c).norm() : 1.0;
-    return Generalized_quadric::plane_through(lift(ia, a), lift(ib, b), lift(ic, c), w);
+    return Vertex_data::plane_through(lift(ia, a), lift(ib, b), lift(ic, c), w);
   }
 
   /// The border quadric of Plane_quadrics, on the geometric coordinates.
-  Generalized_quadric border(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
-                             double weight) const {
+  Vertex_data border(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, double weight) const {
     const Quadric q = detail::simplification::border_plane(a, b, c, weight, area_weighted);
     const Eigen::Index n = 3 + static_cast<Eigen::Index>(dimension());
-    Generalized_quadric g{Eigen::MatrixXd::Zero(n, n), Eigen::VectorXd::Zero(n), q.c};
-    g.a.topLeftCorner<3, 3>() << q.a00, q.a01, q.a02, q.a01, q.a11, q.a12, q.a02, q.a12, q.a22;
-    g.b.head<3>() << q.b0, q.b1, q.b2;
+    Vertex_data g{Vertex_data::Matrix::Zero(n, n), Vertex_data::Vector::Zero(n), q.c};
+    g.a.template topLeftCorner<3, 3>() << q.a00, q.a01, q.a02, q.a01, q.a11, q.a12, q.a02, q.a12, q.a22;
+    g.b.template head<3>() << q.b0, q.b1, q.b2;
     return g;
   }
 
-  Placement place(const Generalized_quadric& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+  Placement place(const Vertex_data& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
     if (q.dimension() == 0) return {0.0, 0.5 * (a + b)};
-    Eigen::FullPivLU<Eigen::MatrixXd> lu(q.a);
+    Eigen::FullPivLU<typename Vertex_data::Matrix> lu(q.a);
     lu.setThreshold(conditioning);
     if (lu.isInvertible()) {
-      const Eigen::VectorXd v = lu.solve(-q.b);
-      const Eigen::Vector3d x = v.head<3>();
+      const typename Vertex_data::Vector v = lu.solve(-q.b);
+      const Eigen::Vector3d x = v.template head<3>();
       const double limit = max_distance_factor * max_distance_factor * (b - a).squaredNorm();
       if (v.allFinite() && (x - 0.5 * (a + b)).squaredNorm() <= limit) return {q(v), x};
     }
@@ -283,17 +308,16 @@ struct Attribute_quadrics {
   }
 
   /// The cost at position x with the best attribute values there.
-  Placement fixed(const Generalized_quadric& q, const Eigen::Vector3d&, const Eigen::Vector3d&,
-                  const Eigen::Vector3d& x) const {
+  Placement fixed(const Vertex_data& q, const Eigen::Vector3d&, const Eigen::Vector3d&, const Eigen::Vector3d& x) const {
     if (q.dimension() == 0) return {0.0, x};
     return {q(best_at(q, x)), x};
   }
 
   /// After a collapse: the survivor's values, the minimizer at its position,
   /// written to each writable map.
-  void collapsed(std::size_t survivor, const Generalized_quadric& q, const Eigen::Vector3d& x) const {
+  void collapsed(std::size_t survivor, const Vertex_data& q, const Eigen::Vector3d& x) const {
     if (dimension() == 0 || q.dimension() == 0) return;
-    const Eigen::VectorXd v = best_at(q, x);
+    const typename Vertex_data::Vector v = best_at(q, x);
     std::vector<double> values;
     for (std::size_t k = 0; k < attributes.size(); ++k) {
       if (!attributes[k].write) continue;
@@ -306,10 +330,10 @@ struct Attribute_quadrics {
 
  private:
   // (x, weight · values of vertex v).
-  Eigen::VectorXd lift(std::size_t v, const Eigen::Vector3d& x) const {
+  typename Vertex_data::Vector lift(std::size_t v, const Eigen::Vector3d& x) const {
     const std::size_t k = dimension();
-    Eigen::VectorXd r(3 + static_cast<Eigen::Index>(k));
-    r.head<3>() = x;
+    typename Vertex_data::Vector r(3 + static_cast<Eigen::Index>(k));
+    r.template head<3>() = x;
     for (std::size_t i = 0; i < k; ++i) r[3 + static_cast<Eigen::Index>(i)] = state.values[v * k + i];
     return r;
   }
@@ -317,15 +341,15 @@ struct Attribute_quadrics {
   // (x, s) with s minimizing Q(x, ·): A_ss s = −(A_sx x + b_s). A_ss is
   // positive semi-definite; a tiny multiple of its trace on the diagonal
   // makes it definite where a vertex's faces do not constrain a value.
-  static Eigen::VectorXd best_at(const Generalized_quadric& q, const Eigen::Vector3d& x) {
+  static typename Vertex_data::Vector best_at(const Vertex_data& q, const Eigen::Vector3d& x) {
     const Eigen::Index n = q.dimension(), k = n - 3;
-    Eigen::VectorXd v(n);
-    v.head<3>() = x;
+    typename Vertex_data::Vector v(n);
+    v.template head<3>() = x;
     if (k == 0) return v;
-    Eigen::MatrixXd ass = q.a.bottomRightCorner(k, k);
+    typename Vertex_data::Matrix ass = q.a.bottomRightCorner(k, k);
     const double tiny = 1e-12 * std::max(ass.trace(), std::numeric_limits<double>::min());
     ass.diagonal().array() += tiny;
-    const Eigen::VectorXd rhs = -(q.a.bottomLeftCorner(k, 3) * x + q.b.tail(k));
+    const typename Vertex_data::Vector rhs = -(q.a.bottomLeftCorner(k, 3) * x + q.b.tail(k));
     v.tail(k) = ass.ldlt().solve(rhs);
     return v;
   }
