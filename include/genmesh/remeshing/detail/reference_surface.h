@@ -7,8 +7,8 @@
 // Queries are bounded: the caller passes a point known to lie on the
 // surface (the vertex's previous projection), so the search is pruned to the
 // ball through it, and the triangle it lies in, where the search starts
-// (Aabb_tree::closest_point_from: that triangle's leaf first, then up the
-// tree); the closest point is the global one either way.
+// (Aabb_tree::closest_point_from: that triangle is tested first, and its
+// distance bounds the descent); the closest point is the global one either way.
 // Deterministic: every backend numbers faces and vertices alike, so the tree
 // (built in face order, fans from the lowest-index corner) and its answers
 // are the same on every backend.
@@ -101,7 +101,7 @@ public:
     if (std::isfinite(d2)) {
       // A little slack: `on` is a computed point of a triangle, not exactly on it.
       const double r = std::sqrt(d2) * (1 + 1e-9) + slack_;
-      // From the previous triangle's leaf up: it is tested first and bounds the rest.
+      // The previous triangle is tested first and bounds the rest.
       const auto c = tree_->closest_point_from(q, r * r, triangle);
       // Nothing that near: face is null_face().
       if (c.face != boost::graph_traits<G>::null_face()) return answer(q, c, triangle, value);
@@ -113,6 +113,8 @@ public:
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 
   bool empty() const { return tree_->empty(); }
+  /// The number of indexed triangles (leaf-order indices are below it).
+  std::size_t triangle_count() const { return tree_->triangle_count(); }
 
 private:
   Eigen::Vector3d answer(const Eigen::Vector3d& q, const typename Aabb_tree<G>::Closest& c, std::size_t& triangle,

@@ -561,25 +561,34 @@ public:
     if (o_.smoothing == Smoothing::none || steps <= 0) return 0;
     grow();
     // The topology does not change while smoothing: read each free vertex's
-    // ring once (canonical order, compressed rows of vertex numbers), the
-    // positions into one array, and write the positions back at the end.
-    std::vector<V> free;
+    // ring once (canonical order, compressed rows), the positions into one
+    // array, and write the positions back at the end. Vertices are numbered
+    // here in spatial_order, so that a ring's positions lie near each other
+    // and near the previous vertex's in memory (in vertex order, split
+    // vertices appended at the end scatter every ring); Jacobi steps, so the
+    // order changes no result.
+    const std::vector<V> order = spatial_order([&](V v) { return halfedge(v, g_) != null_h(); });
+    std::vector<std::uint32_t> local(index_bound(vertex_index, g_), k_none);
+    std::vector<Eigen::Vector3d> pos(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      local[vid(order[i])] = static_cast<std::uint32_t>(i);
+      pos[i] = pt(order[i]);
+    }
     std::vector<std::uint32_t> free_id, offset{0}, ring;
-    const std::size_t vb = index_bound(vertex_index, g_);
-    std::vector<Eigen::Vector3d> pos(vb, Eigen::Vector3d::Zero());
-    free.reserve(vb), free_id.reserve(vb), offset.reserve(vb + 1), ring.reserve(7 * vb);
-    for (auto v : vertices(g_)) {
-      pos[vid(v)] = pt(v);
-      if ((vflag_at(v) & (v_constrained | v_fixed)) || halfedge(v, g_) == null_h()) continue;
-      free.push_back(v);
-      free_id.push_back(vid(v));
-      for_each_in(v, [&](H x) { ring.push_back(vid(source(x, g_))); });
+    free_id.reserve(order.size()), offset.reserve(order.size() + 1), ring.reserve(7 * order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const V v = order[i];
+      if (vflag_at(v) & (v_constrained | v_fixed)) continue;
+      free_id.push_back(static_cast<std::uint32_t>(i));
+      const std::size_t first = ring.size();
+      append_ring(v, ring);
+      for (std::size_t j = first; j < ring.size(); ++j) ring[j] = local[ring[j]];
       offset.push_back(static_cast<std::uint32_t>(ring.size()));
     }
-    std::vector<Eigen::Vector3d> moved(free.size());
+    std::vector<Eigen::Vector3d> moved(free_id.size());
     const double lambda = o_.smoothing_step_size;
     for (int step = 0; step < steps; ++step) {
-      for (std::size_t i = 0; i < free.size(); ++i) {
+      for (std::size_t i = 0; i < free_id.size(); ++i) {
         const Eigen::Vector3d p = pos[free_id[i]];
         const std::uint32_t b = offset[i], k = offset[i + 1] - b;
         const std::uint32_t* r = ring.data() + b;
@@ -587,14 +596,14 @@ public:
                                                   o_.smoothing);
         moved[i] = p + lambda * u;
       }
-      for (std::size_t i = 0; i < free.size(); ++i)
+      for (std::size_t i = 0; i < free_id.size(); ++i)
         if (moved[i].allFinite()) pos[free_id[i]] = moved[i];
     }
-    for (std::size_t i = 0; i < free.size(); ++i) {
-      set_pt(free[i], pos[free_id[i]]);
-      vis_->on_vertex_moved(free[i], std::as_const(g_));
+    for (const std::uint32_t i : free_id) {
+      set_pt(order[i], pos[i]);
+      vis_->on_vertex_moved(order[i], std::as_const(g_));
     }
-    return free.size();
+    return free_id.size();
   }
 
   /// The tangential move of a free (inner) vertex at p whose ring
@@ -691,18 +700,42 @@ public:
   void project() {
     if (!ref_) return;
     grow();
-    // In vertex order: sorting the queries by their last triangle (the
-    // tree's Morton order) made the descents share cached paths but the
-    // vertex reads random, and the sort cost more than it saved.
-    for (auto v : vertices(g_)) {
-      if (vflag_at(v) & v_fixed) continue;
-      Eigen::Vector3d& on = on_at(v);
+    // In the tree's order (spatial_order): consecutive queries walk the
+    // same tree nodes and triangles while they are in cache. The queries
+    // wait for memory more than they compute: in vertex order, halving their
+    // instructions (the 4-wide tree) left their time unchanged; sorted, their
+    // L1 misses halve (armadillo: 2.3M -> 1.2M) and the step takes ~25 % less
+    // time. Each query is independent of the others.
+    for (const V v : spatial_order([&](V x) { return !(vflag_at(x) & v_fixed); })) {
+      Eigen::Vector3d& on = on_[vid(v)];
       const Eigen::Vector3d p = pt(v);
       on = ref_->project(p, on, on_triangle_[vid(v)], sizing_.empty() ? nullptr : &sizing_[vid(v)]);
       if (on == p) continue;
       set_pt(v, on);
       vis_->on_vertex_moved(v, std::as_const(g_));
     }
+  }
+
+  /// The vertices for which keep(v) holds, bucketed by the reference
+  /// triangle each was last projected to (leaf order is Morton order, so
+  /// this is a spatial order; without a reference surface, vertex order);
+  /// stable: vertex order within a bucket, then the vertices with no
+  /// triangle yet. The same on every backend. A counting sort.
+  template <class Keep>
+  std::vector<V> spatial_order(Keep&& keep) {
+    std::vector<V> todo;
+    for (auto v : vertices(g_))
+      if (keep(v)) todo.push_back(v);
+    if (!ref_) return todo;
+    grow();
+    const std::size_t nt = ref_->triangle_count();
+    auto key = [&](V v) { return std::min<std::size_t>(on_triangle_[vid(v)], nt); };
+    std::vector<std::uint32_t> bucket(nt + 2, 0);
+    for (const V v : todo) ++bucket[key(v) + 1];
+    for (std::size_t t = 1; t < bucket.size(); ++t) bucket[t] += bucket[t - 1];
+    std::vector<V> order(todo.size());
+    for (const V v : todo) order[bucket[key(v)]++] = v;
+    return order;
   }
 
   void finish() {
@@ -765,10 +798,28 @@ private:
   /// border halfedge if it has one, else the one of its lowest-numbered edge.
   template <class Fn>
   void for_each_in(V v, Fn&& f) const {
-    const H start = halfedge(v, g_);
-    if (start == null_h()) return;
     Ring ring;
-    std::size_t first = 0;
+    const std::size_t first = walk_ring(v, [&](H x) { ring.push_back(x); });
+    const std::size_t k = ring.size();
+    for (std::size_t i = 0; i < k; ++i) f(ring[(first + i) % k]);
+  }
+
+  /// Appends the vertex numbers of v's neighbours (the sources of the
+  /// halfedges into v) in for_each_in's order, without a ring of halfedges:
+  /// walked once, then rotated to the canonical start.
+  void append_ring(V v, std::vector<std::uint32_t>& out) const {
+    const auto base = static_cast<std::ptrdiff_t>(out.size());
+    const std::size_t first = walk_ring(v, [&](H x) { out.push_back(vid(source(x, g_))); });
+    std::rotate(out.begin() + base, out.begin() + base + static_cast<std::ptrdiff_t>(first), out.end());
+  }
+
+  /// Calls f(x) for every halfedge x into v, from halfedge(v); returns the
+  /// position of the canonical start among them (see for_each_in).
+  template <class Fn>
+  std::size_t walk_ring(V v, Fn&& f) const {
+    const H start = halfedge(v, g_);
+    if (start == null_h()) return 0;
+    std::size_t first = 0, i = 0;
     bool border = false;
     std::uint32_t lowest = k_none;
     H x = start;
@@ -776,19 +827,17 @@ private:
       if (!border) {
         if (is_border(x)) {
           border = true;
-          first = ring.size();
-        } else if (const std::uint32_t i = eid(x); i < lowest) {
-          lowest = i;
-          first = ring.size();
+          first = i;
+        } else if (const std::uint32_t e = eid(x); e < lowest) {
+          lowest = e;
+          first = i;
         }
       }
-      ring.push_back(x);
+      f(x);
       x = opposite(next(x, g_), g_);
+      ++i;
     } while (x != start);
-    const std::size_t k = ring.size();
-    for (std::size_t i = 0; i < k; ++i) {
-      f(ring[(first + i) % k]);
-    }
+    return first;
   }
 
   // --- sizing ----------------------------------------------------------------

@@ -315,13 +315,21 @@ class Collapser {
       slot_face_.resize(fb);
       slot_of_.assign(fb, no_slot);
       for (std::size_t f = 0; f < fb; ++f) slot_face_[f] = static_cast<std::uint32_t>(f);
+      {
+        Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+        for (const V v : vertices(g_)) {
+          lo = lo.cwiseMin(pos_[vi(v)]);
+          hi = hi.cwiseMax(pos_[vi(v)]);
+        }
+        if (lo.x() <= hi.x()) quantize_ = Quantizer::over(lo, hi);
+      }
       for (const F f : faces(g_)) {
         const H h0 = halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
         const std::array<std::uint32_t, 3> id{static_cast<std::uint32_t>(vi(target(h0, g_))),
                                               static_cast<std::uint32_t>(vi(target(h1, g_))),
                                               static_cast<std::uint32_t>(vi(target(h2, g_)))};
         slot_of_[fi(f)] = static_cast<std::uint32_t>(fi(f));
-        slot_[fi(f)].set(Box::of(pos_[id[0]], pos_[id[1]], pos_[id[2]]), id);
+        slot_[fi(f)].set(quantize_(Box::of(pos_[id[0]], pos_[id[1]], pos_[id[2]])), id);
       }
       build_grid();
     }
@@ -617,24 +625,27 @@ class Collapser {
     const double m = n > 0 ? sum / static_cast<double>(n) : 0.0;
     const double cell = m > 0 ? 4.0 * m : 1.0;
     grid_.reset(cell, slot_.size());
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> order;
+    // Morton code (10 bits an axis, in cells) << 32 | slot: one integer
+    // sort.
+    std::vector<std::uint64_t> order;
     order.reserve(slot_.size());
     for (std::size_t s = 0; s < slot_.size(); ++s) {
       const auto t = slot_triangle(s);
       const Eigen::Vector3d c = ((t.p[0] + t.p[1] + t.p[2]) / 3.0 - lo) / cell;
-      order.push_back({morton(c), static_cast<std::uint32_t>(s)});
+      order.push_back(morton(c) << 32 | s);
     }
     std::sort(order.begin(), order.end());
+    constexpr std::uint64_t low = 0xffffffffu;
     // Slot s takes the slot order[s] had: follow each cycle of the
-    // permutation, marking placed slots by order[s].second = s.
+    // permutation, marking placed slots by order[s]'s low half = s.
     for (std::size_t s = 0; s < order.size(); ++s) {
-      if (order[s].second == s) continue;
+      if ((order[s] & low) == s) continue;
       const Face_slot first = slot_[s];
       const std::uint32_t first_face = slot_face_[s];
       std::size_t j = s;
       for (;;) {
-        const std::size_t k = order[j].second;
-        order[j].second = static_cast<std::uint32_t>(j);
+        const std::size_t k = order[j] & low;
+        order[j] = (order[j] & ~low) | j;
         if (k == s) {
           slot_[j] = first;
           slot_face_[j] = first_face;
@@ -645,18 +656,19 @@ class Collapser {
         j = k;
       }
     }
-    std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(order);
+    std::vector<std::uint64_t>().swap(order);
     for (std::size_t s = 0; s < slot_.size(); ++s) {
       slot_of_[slot_face_[s]] = static_cast<std::uint32_t>(s);
-      grid_.insert(static_cast<std::uint32_t>(s), slot_[s].box());
+      const auto t = slot_triangle(s);
+      grid_.insert(static_cast<std::uint32_t>(s), Box::of(t.p[0], t.p[1], t.p[2]));
     }
     grid_faces_ = faces_;
   }
 
-  // The Morton code of a point in cell units (21 bits an axis, clamped).
+  // The Morton code of a point in cell units (10 bits an axis, clamped).
   static std::uint64_t morton(const Eigen::Vector3d& c) {
     auto spread = [](double x) {
-      return genmesh::detail::morton_spread(static_cast<std::uint64_t>(std::clamp(x, 0.0, double((1u << 21) - 1))));
+      return genmesh::detail::morton_spread(static_cast<std::uint64_t>(std::clamp(x, 0.0, double((1u << 10) - 1))));
     };
     return spread(c.x()) | spread(c.y()) << 1 | spread(c.z()) << 2;
   }
@@ -677,8 +689,9 @@ class Collapser {
         const std::uint32_t is = static_cast<std::uint32_t>(vi(source(x, g_))),
                             iq = static_cast<std::uint32_t>(vi(q)),
                             iw = static_cast<std::uint32_t>(vi(target(next(x, g_), g_)));
-        slot_[sf].set(Box::of(pos_[is], pos_[iq], pos_[iw]), {is, iq, iw});
-        if (!rebuild) grid_.insert(static_cast<std::uint32_t>(sf), slot_[sf].box());
+        const Box b = Box::of(pos_[is], pos_[iq], pos_[iw]);
+        slot_[sf].set(quantize_(b), {is, iq, iw});
+        if (!rebuild) grid_.insert(static_cast<std::uint32_t>(sf), b);
       }
       x = opposite(next(x, g_), g_);
     } while (x != start);
@@ -721,11 +734,11 @@ class Collapser {
     Box all = Box::of(fresh_[0].p[0], fresh_[0].p[1], fresh_[0].p[2]);
     for (std::size_t i = 0; i < fresh_.size(); ++i) {
       const Box b = Box::of(fresh_[i].p[0], fresh_[i].p[1], fresh_[i].p[2]);
-      fresh_box_[i] = Float_box::around(b);
+      fresh_box_[i] = quantize_(b);
       all.lo = all.lo.cwiseMin(b.lo);
       all.hi = all.hi.cwiseMax(b.hi);
     }
-    const Float_box all_f = Float_box::around(all);
+    const Short_box all_q = quantize_(all);
     // Two passes: the grid's entries pick the faces whose box may meet
     // the new ones' (without reading them), their slots pick the candidates
     // (asking for their corners' points as they go), then the tests read
@@ -740,13 +753,13 @@ class Collapser {
       for (std::size_t k = 0; k < std::min(ahead, n); ++k) prefetch(&slot_[near_[k]]);
       for (std::size_t k = 0; k < n; ++k) {
         if (k + ahead < n) prefetch(&slot_[near_[k + ahead]]);
-        pick_candidate(near_[k], ip, iq, all_f);
+        pick_candidate(near_[k], ip, iq, all_q);
       }
     }
     for (const auto& [f, mask] : candidates_) {
       const Mesh_triangle<std::uint32_t> u = slot_triangle(f);
       for (std::size_t i = 0; i < fresh_.size(); ++i)
-        if ((i < 64 ? (mask >> i) & 1u : slot_[f].overlaps(fresh_box_[i])) && !separated(i, u) &&
+        if ((i < 64 ? (mask >> i) & 1u : slot_[f].b.meets(fresh_box_[i])) && !separated(i, u) &&
             exact_test(fresh_[i], u))
           return false;
     }
@@ -762,14 +775,14 @@ class Collapser {
   // Lists candidate face f with the new faces whose boxes its box meets
   // (bit i: new face i; new faces from the 64th on are always tested),
   // unless it is dead, around p or q, or meets none.
-  void pick_candidate(std::uint32_t f, std::uint32_t ip, std::uint32_t iq, const Float_box& all) {
+  void pick_candidate(std::uint32_t f, std::uint32_t ip, std::uint32_t iq, const Short_box& all) {
     const Face_slot& sl = slot_[f];
-    if (!sl.alive() || !sl.overlaps(all)) return;
+    if (!sl.alive() || !sl.b.meets(all)) return;
     for (const std::uint32_t v : sl.v)
       if (v == ip || v == iq) return;
     std::uint64_t mask = 0;
     for (std::size_t i = 0; i < std::min<std::size_t>(fresh_.size(), 64); ++i)
-      if (sl.overlaps(fresh_box_[i])) mask |= std::uint64_t{1} << i;
+      mask |= static_cast<std::uint64_t>(sl.b.meets(fresh_box_[i])) << i;
     if (mask == 0 && fresh_.size() <= 64) return;
     for (const std::uint32_t v : sl.v) prefetch(&pos_[v]);
     candidates_.push_back({f, mask});
@@ -1125,31 +1138,30 @@ class Collapser {
   // Feature lines: per edge, is it one; per vertex, does it move along one.
   bool features_ = false;
   // The self-intersection guard: faces by index, alive or not, and the grid.
-  // Per face: its box (float, rounded outwards: half the memory traffic of
-  // the query loop; the grid lists the face in the cells of this box), its corners
-  // (read by a candidate's exact test without walking the mesh; v[0] ==
-  // dead once it is gone).
+  // Per face (24 bytes): its box in 16 bits an axis (for the candidates'
+  // masks; monotone quantization keeps every overlap), its corners (read by
+  // a candidate's exact test without walking the mesh; v[0] == dead once it
+  // is gone). The grid lists each face with its exact box.
   struct Face_slot {
-    Float_box b;
+    Short_box b;
     static constexpr std::uint32_t dead = ~std::uint32_t{0};
     std::uint32_t v[3] = {dead, 0, 0};
-    Box box() const { return b.box(); }
     bool alive() const { return v[0] != dead; }
-    void set(const Box& box, const std::array<std::uint32_t, 3>& ids) {
+    void set(const Short_box& box, const std::array<std::uint32_t, 3>& ids) {
       v[0] = ids[0];
       v[1] = ids[1];
       v[2] = ids[2];
-      b = Float_box::around(box);
+      b = box;
     }
-    bool overlaps(const Float_box& o) const { return b.overlaps(o); }
   };
+  Quantizer quantize_; // for the slots' and the new faces' boxes
   std::vector<Face_slot> slot_; // in Morton order (see build_grid)
   static constexpr std::uint32_t no_slot = ~std::uint32_t{0};
   std::vector<std::uint32_t> slot_of_; // by face index; no_slot once dead
   std::vector<std::uint32_t> slot_face_; // by slot: its face index
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
   std::vector<H> around_;           // the survivor's incoming halfedges
-  std::vector<Float_box> fresh_box_; // rounded outwards
+  std::vector<Short_box> fresh_box_;
   std::vector<std::uint32_t> near_; // slots a grid query found
   std::vector<std::pair<std::uint32_t, std::uint64_t>> candidates_; // slot, new faces its box meets
   std::vector<Fresh_plane> fresh_plane_;

@@ -16,7 +16,6 @@
 #include <Eigen/Core>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -35,30 +34,41 @@ struct Box {
   }
 };
 
-// A box in float, rounded outwards from a Box (half the bytes; its tests
-// keep every overlap of the boxes it holds).
-struct Float_box {
-  float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-  static Float_box around(const Box& b) {
-    Float_box r;
+// A box in 16 bits an axis: a Box through Quantizer, whose map is monotone
+// (non-decreasing) on each axis, so that boxes that meet stay boxes that
+// meet (a quarter of the bytes; the tests are integer compares).
+struct Short_box {
+  std::uint16_t lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  // Do they overlap? (No branches: for a mask over many boxes.)
+  bool meets(const Short_box& o) const {
+    return (lo[0] <= o.hi[0]) & (o.lo[0] <= hi[0]) & (lo[1] <= o.hi[1]) & (o.lo[1] <= hi[1]) & (lo[2] <= o.hi[2]) &
+           (o.lo[2] <= hi[2]);
+  }
+};
+
+// x ↦ clamp((x − origin) · scale, 0, 65535), truncated, on each axis.
+struct Quantizer {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  double scale = 1.0;
+  // Fits [lo, hi] into the 16-bit range (a point outside still maps
+  // monotonically: clamped).
+  static Quantizer over(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+    Quantizer q;
+    q.origin = lo;
+    const double extent = (hi - lo).maxCoeff();
+    q.scale = extent > 0 ? 65535.0 / extent : 1.0;
+    return q;
+  }
+  std::uint16_t axis(double x, int i) const {
+    return static_cast<std::uint16_t>(std::clamp((x - origin[i]) * scale, 0.0, 65535.0));
+  }
+  Short_box operator()(const Box& b) const {
+    Short_box r;
     for (int i = 0; i < 3; ++i) {
-      r.lo[i] = static_cast<float>(b.lo[i]);
-      if (static_cast<double>(r.lo[i]) > b.lo[i]) r.lo[i] = below(r.lo[i]);
-      r.hi[i] = static_cast<float>(b.hi[i]);
-      if (static_cast<double>(r.hi[i]) < b.hi[i]) r.hi[i] = -below(-r.hi[i]);
+      r.lo[i] = axis(b.lo[i], i);
+      r.hi[i] = axis(b.hi[i], i);
     }
     return r;
-  }
-  Box box() const { return {Eigen::Vector3d(lo[0], lo[1], lo[2]), Eigen::Vector3d(hi[0], hi[1], hi[2])}; }
-  bool overlaps(const Float_box& o) const {
-    return lo[0] <= o.hi[0] && o.lo[0] <= hi[0] && lo[1] <= o.hi[1] && o.lo[1] <= hi[1] && lo[2] <= o.hi[2] &&
-           o.lo[2] <= hi[2];
-  }
-  // The next float toward −∞ (std::nextafter without the library call).
-  static float below(float f) {
-    if (f == 0) return -std::numeric_limits<float>::denorm_min();
-    const auto u = std::bit_cast<std::uint32_t>(f);
-    return std::bit_cast<float>(f > 0 ? u - 1 : u + 1);
   }
 };
 
@@ -71,7 +81,7 @@ class Face_grid {
     used_ = 0;
     version_.assign(faces, 0);
     std::size_t cap = 16;
-    while (cap < faces / 4) cap *= 2; // a cell holds tens of faces; load below a half
+    while (cap < faces / 16) cap *= 2; // a cell lists tens of faces; grown at load 1/2
     table_.resize(cap);
   }
 
@@ -79,18 +89,9 @@ class Face_grid {
   // before become stale (queries drop them).
   void insert(std::uint32_t f, const Box& b) {
     const std::uint8_t v = bump(f);
-    const Axis ax = axis(b.lo.x(), b.hi.x()), ay = axis(b.lo.y(), b.hi.y()), az = axis(b.lo.z(), b.hi.z());
-    for (std::uint32_t x = ax.c0; x <= ax.c1; ++x) {
-      const std::uint8_t bx = ax.bins(x), sx = x == ax.c0;
-      for (std::uint32_t y = ay.c0; y <= ay.c1; ++y) {
-        const std::uint8_t by = ay.bins(y), sy = y == ay.c0;
-        for (std::uint32_t z = az.c0; z <= az.c1; ++z) {
-          const std::uint8_t bz = az.bins(z), sz = z == az.c0;
-          cell(key(x, y, z)).push_back(
-              {f, static_cast<std::uint8_t>(v << 3 | sx | sy << 1 | sz << 2), bx, by, bz});
-        }
-      }
-    }
+    for_cells(b, [&](std::uint64_t k, const Entry& e) {
+      cell(k).push_back({f, static_cast<std::uint8_t>(v << 3 | e.flags), e.x, e.y, e.z});
+    });
   }
 
   // f is gone: its entries become stale.
@@ -102,37 +103,37 @@ class Face_grid {
   // may append a face whose box misses b (the bins are conservative), never
   // misses one whose box meets b. Drops the stale entries it walks over.
   void query(const Box& b, std::vector<std::uint32_t>& out) {
-    const Axis ax = axis(b.lo.x(), b.hi.x()), ay = axis(b.lo.y(), b.hi.y()), az = axis(b.lo.z(), b.hi.z());
-    for (std::uint32_t x = ax.c0; x <= ax.c1; ++x) {
-      const std::uint8_t bx = ax.bins(x), sx = x == ax.c0;
-      for (std::uint32_t y = ay.c0; y <= ay.c1; ++y) {
-        const std::uint8_t by = ay.bins(y), sy = y == ay.c0;
-        for (std::uint32_t z = az.c0; z <= az.c1; ++z) {
-          const std::uint8_t bz = az.bins(z), sz = z == az.c0;
-          // A face may be taken here if, on each axis, its box or the
-          // query's starts in this cell (see above).
-          const std::uint8_t need = static_cast<std::uint8_t>(7 & ~(sx | sy << 1 | sz << 2));
-          Bucket* c = find(key(x, y, z));
-          if (c == nullptr) continue;
-          auto& list = c->list;
-          std::size_t kept = 0;
-          const std::size_t n = list.size();
-          for (std::size_t k = 0; k < n; ++k) {
-            const Entry e = list[k];
-            if (version_[e.face] != e.flags >> 3) continue; // stale: dropped
-            list[kept++] = e;
-            if ((e.flags & need) == need && meets(e.x, bx) && meets(e.y, by) && meets(e.z, bz)) out.push_back(e.face);
-          }
-          list.resize(kept);
-        }
+    for_cells(b, [&](std::uint64_t key, const Entry& q) {
+      Bucket* c = find(key);
+      if (c == nullptr) return;
+      // A face may be taken here if, on each axis, its box or the query's
+      // starts in this cell (see above).
+      const std::uint8_t need = static_cast<std::uint8_t>(7 & ~q.flags);
+      // The bins, a byte an axis: an entry's meet the query's on every axis
+      // iff each byte of t below has bit 4 set (16 + a − b ≥ 16 iff a ≥ b;
+      // no borrow crosses a byte).
+      const std::uint32_t qw = q.x | q.y << 8 | q.z << 16;
+      const std::uint32_t qhi = (qw & 0x0f0f0fu) | 0x101010u, qlo = (qw >> 4) & 0x0f0f0fu;
+      auto& list = c->list;
+      std::size_t kept = 0;
+      const std::size_t n = list.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        const Entry e = list[i];
+        if (version_[e.face] != e.flags >> 3) continue; // stale: dropped
+        list[kept++] = e;
+        const std::uint32_t w = e.x | e.y << 8 | e.z << 16;
+        const std::uint32_t t = (qhi - ((w >> 4) & 0x0f0f0fu)) & (((w & 0x0f0f0fu) | 0x101010u) - qlo);
+        if ((e.flags & need) == need && (t & 0x101010u) == 0x101010u) out.push_back(e.face);
       }
-    }
+      list.resize(kept);
+    });
   }
 
  private:
   // A face listed in a cell: its slot, its version when listed (5 bits)
   // and on which axes its range starts at this cell (3 bits), and per axis
   // the bins of the cell (16 a side) its box covers there (lo << 4 | hi).
+  // (for_cells describes a cell of a box in one, without face or version.)
   struct Entry {
     std::uint32_t face;
     std::uint8_t flags;
@@ -144,9 +145,30 @@ class Face_grid {
   };
   static constexpr std::uint64_t empty = ~std::uint64_t{0};
 
-  static bool meets(std::uint8_t a, std::uint8_t b) { return (a >> 4) <= (b & 15) && (b >> 4) <= (a & 15); }
 
   std::uint8_t bump(std::uint32_t f) { return version_[f] = static_cast<std::uint8_t>((version_[f] + 1) & 31); }
+
+  // Calls f(key, cell) for every cell b overlaps, where cell.flags says on
+  // which axes b's range starts at this cell (bit 0: x, 1: y, 2: z) and
+  // cell.x, .y, .z are the bins of the cell b covers (see Axis).
+  template <class F>
+  void for_cells(const Box& b, F&& f) const {
+    const Axis ax = axis(b.lo.x(), b.hi.x()), ay = axis(b.lo.y(), b.hi.y()), az = axis(b.lo.z(), b.hi.z());
+    Entry e{};
+    for (std::uint32_t x = ax.c0; x <= ax.c1; ++x) {
+      e.x = ax.bins(x);
+      const int sx = x == ax.c0;
+      for (std::uint32_t y = ay.c0; y <= ay.c1; ++y) {
+        e.y = ay.bins(y);
+        const int sy = y == ay.c0;
+        for (std::uint32_t z = az.c0; z <= az.c1; ++z) {
+          e.z = az.bins(z);
+          e.flags = static_cast<std::uint8_t>(sx | sy << 1 | (z == az.c0) << 2);
+          f(key(x, y, z), e);
+        }
+      }
+    }
+  }
 
   // One axis of a box: its cells [c0, c1] (16 bits, clamped: a mesh wider
   // than 65,536 cells only gets longer lists in its outer cells) and the
@@ -167,7 +189,10 @@ class Face_grid {
     return a;
   }
   void place(double x, std::uint32_t& c, std::uint8_t& b) const {
-    const double s = x * inv_, f = std::floor(s);
+    // floor without the library call (s clamped into int64's range first).
+    const double s = std::clamp(x * inv_, -2.0 * half, 2.0 * half);
+    double f = static_cast<double>(static_cast<std::int64_t>(s));
+    if (f > s) f -= 1;
     if (f < -static_cast<double>(half)) {
       c = 0;
       b = 0;
