@@ -372,7 +372,8 @@ const bool registered = (register_all(), register_curve(), true);
 //   scaled into [0, 1] over the bounding box), weight 1.
 // Rows: Plane_quadrics (the colours not used); Attribute_quadrics<G>
 // (heap-stored quadrics: session 5's code, allocations in every evaluation);
-// Attribute_quadrics<G, 8> (inline storage, same results to the bit). The
+// Attribute_quadrics<G, 8> (inline storage, same results to the bit);
+// Attribute_quadrics<G, N> with N = 3 + the colour's width (7, 6). The
 // colour map holds Eigen vectors of at most 4 values (inline too), so the
 // rows differ only in the quadrics. Timed: simplify() alone, thread CPU
 // time; counters faces_out and peak_MB (heap peak above the input mesh).
@@ -443,6 +444,11 @@ void register_attribute_rows() {
                  [=](benchmark::State& s) { attribute_row<genmesh::Attribute_quadrics<Halfedge_mesh>>(s, dino); });
     register_row("AttributeSimplification/" + mesh + "/Attribute_quadrics_inline8",
                  [=](benchmark::State& s) { attribute_row<genmesh::Attribute_quadrics<Halfedge_mesh, 8>>(s, dino); });
+    // The bound that fits exactly: 3 + 4 (dino's RGBA), 3 + 3 (armadillo's RGB).
+    register_row("AttributeSimplification/" + mesh + "/Attribute_quadrics_inline_exact", [=](benchmark::State& s) {
+      if (dino) attribute_row<genmesh::Attribute_quadrics<Halfedge_mesh, 7>>(s, dino);
+      else attribute_row<genmesh::Attribute_quadrics<Halfedge_mesh, 6>>(s, dino);
+    });
   }
 }
 

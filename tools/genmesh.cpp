@@ -979,9 +979,12 @@ int cmd_simplify(const Args& a) {
       if (a.policy == "probabilistic") r = simplify_with<genmesh::Probabilistic_quadrics>(mesh, a, progress);
       else if (a.policy == "length") r = simplify_with<genmesh::Edge_length>(mesh, a, progress);
       else if (a.policy == "lindstrom-turk") r = simplify_with<genmesh::Lindstrom_turk>(mesh, a, progress);
-      // Up to 5 values (a colour and texture coordinates) the quadrics are stored inline.
-      else if (const std::size_t w = attributes.weighted_width(); w > 0 && w <= 5)
-        r = simplify_with(mesh, a, progress, attributes.template policy<8>());
+      // Up to 5 values (an RGBA colour; a colour and texture coordinates) the
+      // quadrics are stored inline, in 7 × 7 or 8 × 8 matrices (a larger bound
+      // than needed costs memory: docs/benchmarks.md).
+      else if (const std::size_t w = attributes.weighted_width(); w > 0 && w <= 4)
+        r = simplify_with(mesh, a, progress, attributes.template policy<7>());
+      else if (w == 5) r = simplify_with(mesh, a, progress, attributes.template policy<8>());
       else if (w > 5) r = simplify_with(mesh, a, progress, attributes.policy());
       else r = simplify_with<genmesh::Plane_quadrics>(mesh, a, progress);
     } catch (const genmesh::invalid_input& e) {
