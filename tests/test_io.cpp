@@ -1220,6 +1220,14 @@ TEST(IoAttributes, ObjTexcoordsNormalsColoursAndSeams) {
                                                                      "f 1/1 2 3\nf 3 2 1\n"));
   EXPECT_EQ(partial.num_points(), 3u);
   EXPECT_EQ(partial.vertex_attribute("texcoord")->values, (D{0.25, 0.5, 0, 0, 0, 0}));
+  // Flat shading (a normal per face) never splits: the fold stays connected,
+  // each point with its first corner's normal.
+  const Polygon_soup flat = read_soup(write_file("flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                                             "vn 0 0 -1\nvn -1 0 0\n"
+                                                             "f 1//1 3//1 2//1\nf 1//2 4//2 3//2\n"));
+  ASSERT_EQ(flat.num_points(), 4u);
+  EXPECT_EQ(V(flat.face(1).begin(), flat.face(1).end()), (V{0, 3, 2}));
+  EXPECT_EQ(flat.vertex_attribute("normal")->values, (D{0, 0, -1, 0, 0, -1, 0, 0, -1, -1, 0, 0}));
 }
 
 // A uchar colour goes to OBJ in [0, 1] and comes back as doubles.

@@ -19,8 +19,9 @@
 // "texcoord", any other scalar property → its own name) with their types;
 // OFF's C, N and ST variants give "color", "normal" and "texcoord"; OBJ's
 // vn, vertex colours and vt give "normal", "color" and "texcoord", a vertex
-// with different values at different corners (a seam) split into several
-// points unless Read_options::obj_attributes says otherwise. The PLY writer
+// with different texture coordinates at different corners (a texture seam)
+// split into several points unless Read_options::obj_attributes says
+// otherwise (different normals never split a vertex). The PLY writer
 // writes every channel with its type; the OFF and OBJ writers write the
 // channels they have a place for (normal, colour, texture coordinates); STL
 // writes none. read_mesh() returns the file's channels, in the mesh's vertex
@@ -75,9 +76,9 @@ struct Read_options {
   /// read_mesh only: passed to build_mesh() (split non-manifold vertices, reorient).
   bool repair = false;
   /// OBJ: texture coordinates, normals and vertex colours become channels;
-  /// where a vertex's corners give different ones (a seam), it is split
-  /// (split_seams), keeps its first corner's (first_corner), or nothing is
-  /// read but geometry (none).
+  /// where a vertex's corners give different texture coordinates (a seam),
+  /// it is split (split_seams), keeps its first corner's (first_corner), or
+  /// nothing is read but geometry (none). Normals never split a vertex.
   Obj_attributes obj_attributes = Obj_attributes::split_seams;
   /// Largest input accepted, in bytes: a larger regular file is refused
   /// before it is read, a pipe once it has given more.

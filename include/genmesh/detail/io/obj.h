@@ -11,18 +11,19 @@
 //
 // Attributes (Obj_attributes): OBJ gives texture coordinates and normals per
 // face corner, a soup per point. Where a vertex's corners give different
-// values (a texture seam, a hard edge; equal values under different indices
-// count as one), split_seams (the default) makes each further combination a
-// point of its own — a copy of the position, appended after the file's
-// vertices in the order the corners first use it — so the seam survives: the
-// mesh built from the soup has a border along it. first_corner keeps one
-// point per vertex with the values of its first corner that gives them;
+// texture coordinates (a texture seam; equal values under different indices
+// count as one), split_seams (the default) makes each further one a point of
+// its own — a copy of the position, appended after the file's vertices in
+// the order the corners first use it — so the seam survives: the mesh built
+// from the soup has a border along it. Normals never split a vertex (they
+// follow from the geometry; a flat-shaded file would fall apart): a point
+// keeps the normal of its first corner that gives one. first_corner keeps
+// one point per vertex with the values of its first corner that gives them;
 // none reads geometry only (vt, vn and colours skipped).
 #pragma once
 
 #include <genmesh/detail/io/common.h>
 
-#include <array>
 #include <cctype>
 #include <string_view>
 #include <unordered_map>
@@ -33,8 +34,9 @@ namespace genmesh {
 /// normals (vn) and vertex colours (v x y z r g b); see Read_options.
 enum class Obj_attributes {
   /// Channels "normal", "color", "texcoord"; a vertex whose corners give
-  /// different texture coordinates or normals is split into one point per
-  /// combination (appended after the file's vertices): seams survive.
+  /// different texture coordinates is split into one point per texture
+  /// coordinate (appended after the file's vertices): texture seams survive.
+  /// Different normals never split (the first corner's is kept).
   split_seams,
   /// The same channels, one point per vertex, with the values of its first
   /// corner that gives them (seams are lost; the connectivity is the file's).
@@ -215,30 +217,29 @@ inline Polygon_soup read_obj(const File_content& file, Obj_attributes mode = Obj
     if (!point_vt.empty() && point_vt[v] == none) point_vt[v] = corner_value(corner_vt, vt_first, c);
     if (!point_vn.empty() && point_vn[v] == none) point_vn[v] = corner_value(corner_vn, vn_first, c);
   }
-  if (mode == Obj_attributes::split_seams) {
-    struct Key_hash {
-      std::size_t operator()(const std::array<std::uint32_t, 3>& k) const noexcept {
-        return std::hash<std::uint64_t>{}((std::uint64_t{k[0]} << 32 | k[1]) * 0x9E3779B97F4A7C15ull ^ k[2]);
-      }
-    };
-    std::unordered_map<std::array<std::uint32_t, 3>, std::uint32_t, Key_hash> copies;
+  if (mode == Obj_attributes::split_seams && !point_vt.empty()) {
+    // Only texture seams split: normals follow from the geometry, and a
+    // flat-shaded file (a normal per face) would otherwise fall apart into
+    // separate faces. A copy takes the normal of the first corner using it.
+    std::unordered_map<std::uint64_t, std::uint32_t> copies; // (vertex, vt) -> point
     for (std::size_t c = 0; c < soup.indices.size(); ++c) {
       const std::uint32_t v = soup.indices[c];
-      std::uint32_t t = point_vt.empty() ? none : corner_value(corner_vt, vt_first, c);
+      std::uint32_t t = corner_value(corner_vt, vt_first, c);
+      if (t == none) t = point_vt[v]; // not given here: the vertex's
+      if (t == point_vt[v]) continue;
       std::uint32_t n = point_vn.empty() ? none : corner_value(corner_vn, vn_first, c);
-      if (t == none && !point_vt.empty()) t = point_vt[v]; // not given here: the vertex's
       if (n == none && !point_vn.empty()) n = point_vn[v];
-      if ((point_vt.empty() || t == point_vt[v]) && (point_vn.empty() || n == point_vn[v])) continue;
-      const auto [it, added] = copies.try_emplace({v, t, n}, static_cast<std::uint32_t>(soup.points.size()));
+      const auto [it, added] =
+          copies.try_emplace(std::uint64_t{v} << 32 | t, static_cast<std::uint32_t>(soup.points.size()));
       if (added) {
         if (soup.points.size() == std::numeric_limits<Polygon_soup::Index>::max())
-          throw io_error(file.name, "too many vertices after splitting the texture and normal seams");
+          throw io_error(file.name, "too many vertices after splitting the texture seams");
         soup.points.push_back(soup.points[v]);
         if (!colour.empty()) {
           const double rgb[3] = {colour[3 * v], colour[3 * v + 1], colour[3 * v + 2]};
           colour.insert(colour.end(), rgb, rgb + 3);
         }
-        if (!point_vt.empty()) point_vt.push_back(t);
+        point_vt.push_back(t);
         if (!point_vn.empty()) point_vn.push_back(n);
       }
       soup.indices[c] = it->second;
