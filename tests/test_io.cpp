@@ -1054,7 +1054,9 @@ TEST(IoAttributes, PlyChannelsRoundTrip) {
     const std::string q = genmesh_test::tmp_path(binary ? "attributes_bin.ply" : "attributes_out.ply");
     write_soup(q, s, {.binary = binary});
     EXPECT_EQ(read_soup(q), s) << (binary ? "binary" : "ascii");
-    if (binary) EXPECT_NE(read_bytes(q).find("property uchar alpha"), std::string::npos);
+    if (binary) {
+      EXPECT_NE(read_bytes(q).find("property uchar alpha"), std::string::npos);
+    }
   }
   // OFF: STCNOFF with normal, colour and texture coordinates; no quality.
   const std::string o = genmesh_test::tmp_path("attributes_out.off");
