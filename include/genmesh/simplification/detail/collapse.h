@@ -242,13 +242,16 @@ class Collapser {
     }
   }
 
+  // The box of the vertices' points (empty without vertices).
+  Eigen::AlignedBox3d points_box() const {
+    Eigen::AlignedBox3d box;
+    for (const V v : vertices(g_)) box.extend(pos_[vi(v)]);
+    return box;
+  }
+
   double diagonal() const {
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (const V v : vertices(g_)) {
-      lo = lo.cwiseMin(pos_[vi(v)]);
-      hi = hi.cwiseMax(pos_[vi(v)]);
-    }
-    return lo.x() <= hi.x() ? (hi - lo).norm() : 0.0;
+    const Eigen::AlignedBox3d box = points_box();
+    return box.isEmpty() ? 0.0 : box.diagonal().norm();
   }
 
   // Policy data, locks and the queue.
@@ -315,14 +318,8 @@ class Collapser {
       slot_face_.resize(fb);
       slot_of_.assign(fb, no_slot);
       for (std::size_t f = 0; f < fb; ++f) slot_face_[f] = static_cast<std::uint32_t>(f);
-      {
-        Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-        for (const V v : vertices(g_)) {
-          lo = lo.cwiseMin(pos_[vi(v)]);
-          hi = hi.cwiseMax(pos_[vi(v)]);
-        }
-        if (lo.x() <= hi.x()) quantize_ = Quantizer::over(lo, hi);
-      }
+      if (const Eigen::AlignedBox3d box = points_box(); !box.isEmpty())
+        quantize_ = Quantizer::over(box.min(), box.max());
       for (const F f : faces(g_)) {
         const H h0 = halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
         const std::array<std::uint32_t, 3> id{static_cast<std::uint32_t>(vi(target(h0, g_))),
