@@ -1016,6 +1016,13 @@ void expect_no_worse_than_cgal(const char* label, const CgalPolicies& cgal_polic
   }
 }
 
+// CGAL's edge_collapse with its Garland–Heckbert plane policies.
+void cgal_garland_heckbert(genmesh_test::Surface_mesh& m, const Face_count_stop& stop) {
+  namespace SMS = CGAL::Surface_mesh_simplification;
+  SMS::GarlandHeckbert_plane_policies<genmesh_test::Surface_mesh, genmesh_test::Kernel> gh(m);
+  SMS::edge_collapse(m, stop, CGAL::parameters::get_cost(gh.get_cost()).get_placement(gh.get_placement()));
+}
+
 // Symmetric Hausdorff distance to the input at the same face count, at 10%
 // of the faces: within 10% of CGAL's or better (the distance is estimated
 // from 40000 random samples per side: the estimate of CGAL's own armadillo
@@ -1029,11 +1036,7 @@ TEST(SimplificationOracle, HausdorffNoWorseThanCgalGarlandHeckbert) {
   namespace SMS = CGAL::Surface_mesh_simplification;
   using SM = genmesh_test::Surface_mesh;
   expect_no_worse_than_cgal(
-      "GH",
-      [](SM& m, const Face_count_stop& stop) {
-        SMS::GarlandHeckbert_plane_policies<SM, genmesh_test::Kernel> gh(m);
-        SMS::edge_collapse(m, stop, CGAL::parameters::get_cost(gh.get_cost()).get_placement(gh.get_placement()));
-      },
+      "GH", cgal_garland_heckbert,
       [](SM& m, std::size_t target) { return genmesh::simplify(m, {.target_faces = target}); }, 1.1, 1.4);
 }
 
@@ -1042,11 +1045,7 @@ TEST(SimplificationOracle, PassesHausdorffNoWorseThanCgalGarlandHeckbert) {
   namespace SMS = CGAL::Surface_mesh_simplification;
   using SM = genmesh_test::Surface_mesh;
   expect_no_worse_than_cgal(
-      "GH passes",
-      [](SM& m, const Face_count_stop& stop) {
-        SMS::GarlandHeckbert_plane_policies<SM, genmesh_test::Kernel> gh(m);
-        SMS::edge_collapse(m, stop, CGAL::parameters::get_cost(gh.get_cost()).get_placement(gh.get_placement()));
-      },
+      "GH passes", cgal_garland_heckbert,
       [](SM& m, std::size_t target) {
         return genmesh::simplify(m, {.target_faces = target, .schedule = genmesh::Schedule::passes});
       },

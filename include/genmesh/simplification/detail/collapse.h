@@ -380,50 +380,54 @@ class Collapser {
   Stop_reason run_passes(Simplification_result& r, bool has_target, std::size_t target_faces, double max_error,
                          std::size_t faces0, std::size_t total) {
     touched_.assign(pos_.size(), 0);
-    cand_.reserve(index_bound(edge_index, g_)); // no growth copies: the run's largest array
+    ecost_.assign(index_bound(edge_index, g_), Cost_mark::dirty);
+    cand_.reserve(ecost_.size()); // no growth copies: the run's largest array
     // With a memoryless policy an edge's cost reads the faces at its ends'
     // neighbours; with feature lines a collapse reclassifies the apexes.
     const bool rings = memoryless || features_;
     bool unlimited = false;
     for (;;) {
       if (has_target && faces_ <= target_faces) return Stop_reason::target_faces;
+      // Costs: computed again where a collapse of the last pass touched an
+      // end (or the edge is new to its ends); kept otherwise, bit for bit.
       cand_.clear();
       bool above = false;
       Placement pl;
       for (const E e : edges(g_)) {
+        const std::size_t k = ei(e);
+        float& c = ecost_[k];
         const H h = halfedge(e, g_);
-        if (!evaluate(h, pl)) continue;
-        if (std::sqrt(pl.cost) > max_error) {
-          above = true;
-          continue;
+        if (c == Cost_mark::dirty || touched_[vi(source(h, g_))] || touched_[vi(target(h, g_))]) {
+          if (!evaluate(h, pl)) c = Cost_mark::none;
+          else if (std::sqrt(pl.cost) > max_error) c = Cost_mark::above;
+          else c = pl.cost > 0 ? static_cast<float>(pl.cost) : 0.0f; // ≥ 0: its bits order as integers
         }
-        std::uint32_t a = static_cast<std::uint32_t>(vi(source(h, g_))), b = static_cast<std::uint32_t>(vi(target(h, g_)));
-        if (a > b) std::swap(a, b);
-        const float c = pl.cost > 0 ? static_cast<float>(pl.cost) : 0.0f; // ≥ 0: its bits order as integers
-        cand_.push_back({(std::uint64_t{std::bit_cast<std::uint32_t>(c)} << 32) | a, b, static_cast<std::uint32_t>(ei(e))});
+        if (c >= 0) cand_.push_back((std::uint64_t{std::bit_cast<std::uint32_t>(c)} << 32) | k);
+        else above |= c == Cost_mark::above;
       }
       if (cand_.empty()) return above ? Stop_reason::max_error : Stop_reason::no_collapse_left;
       auto end = cand_.end();
       if (has_target && !unlimited) {
         const std::size_t goal = (faces_ - target_faces) / 8 + 1; // a quarter of the collapses still needed
         if (goal < cand_.size()) {
-          std::nth_element(cand_.begin(), cand_.begin() + static_cast<std::ptrdiff_t>(goal), cand_.end(),
-                           [](const Candidate& x, const Candidate& y) { return x.key < y.key; });
-          const float at = std::bit_cast<float>(static_cast<std::uint32_t>(cand_[goal].key >> 32));
+          std::nth_element(cand_.begin(), cand_.begin() + static_cast<std::ptrdiff_t>(goal), cand_.end());
+          const float at = std::bit_cast<float>(static_cast<std::uint32_t>(cand_[goal] >> 32));
           const std::uint64_t limit = std::uint64_t{std::bit_cast<std::uint32_t>(1.5f * at)} << 32 | 0xffffffffu;
-          end = std::partition(cand_.begin(), cand_.end(), [&](const Candidate& x) { return x.key <= limit; });
+          end = std::partition(cand_.begin(), cand_.end(), [&](std::uint64_t x) { return x <= limit; });
         }
       }
-      std::sort(cand_.begin(), end, [](const Candidate& x, const Candidate& y) {
-        return x.key != y.key ? x.key < y.key : x.b < y.b;
-      });
+      std::sort(cand_.begin(), end);
+      order_ties(cand_.begin(), end);
       std::fill(touched_.begin(), touched_.end(), std::uint8_t{0});
       std::size_t done = 0;
       for (auto it = cand_.begin(); it != end; ++it) {
         if (has_target && faces_ <= target_faces) return Stop_reason::target_faces;
-        const std::uint32_t a = static_cast<std::uint32_t>(it->key), b = it->b;
+        const auto k = static_cast<std::uint32_t>(*it);
+        if (ecost_[k] == Cost_mark::dirty) continue; // gone, or its ends changed, in this pass
+        const H h = halfedge(edesc_[k], g_);
+        const std::size_t a = vi(source(h, g_)), b = vi(target(h, g_));
         if (touched_[a] | touched_[b]) continue;
-        if (!collapse(it->e)) continue;
+        if (!collapse(k)) continue;
         ++done;
         ++r.collapses;
         r.max_error = std::max(r.max_error, std::sqrt(last_cost_));
@@ -444,6 +448,23 @@ class Collapser {
       } else {
         unlimited = false;
       }
+    }
+  }
+
+  // Candidates of equal cost (sorted by edge index so far, which differs
+  // between backends) in the order of their vertex-index pairs (see pair()).
+  template <class It>
+  void order_ties(It first, It last) {
+    while (first != last) {
+      It run = first + 1;
+      while (run != last && (*run >> 32) == (*first >> 32)) ++run;
+      if (run - first > 1) {
+        ties_.clear();
+        for (It x = first; x != run; ++x) ties_.push_back({pair(static_cast<std::uint32_t>(*x)), *x});
+        std::sort(ties_.begin(), ties_.end());
+        for (std::size_t i = 0; i < ties_.size(); ++i) first[static_cast<std::ptrdiff_t>(i)] = ties_[i].second;
+      }
+      first = run;
     }
   }
 
@@ -1086,7 +1107,21 @@ class Collapser {
     }
     const bool top = !border(h), bottom = !border(oh);
     last_survivor_ = q;
-    if (!passes_) {
+    if (passes_) {
+      // The edges of e's faces and of p go or change ends: not candidates
+      // for the rest of this pass (their indices may not stay edges).
+      for (const H side : {h, oh}) {
+        if (border(side)) continue;
+        ecost_[ei(edge(next(side, g_), g_))] = Cost_mark::dirty;
+        ecost_[ei(edge(prev(side, g_), g_))] = Cost_mark::dirty;
+      }
+      const H start = halfedge(p, g_);
+      H x = start;
+      do {
+        ecost_[ei(edge(x, g_))] = Cost_mark::dirty;
+        x = opposite(next(x, g_), g_);
+      } while (x != start);
+    } else {
       if (top) queue_.erase(ei(edge(next(h, g_), g_)));
       if (bottom) queue_.erase(ei(edge(prev(oh, g_), g_)));
       // p's edges (with those of e's faces at p) leave the queue before the
@@ -1247,15 +1282,20 @@ class Collapser {
   double cos_min_angle_ = 1.0; // cos(.min_angle); 1: no limit
   std::vector<Eigen::Vector3d> pos_;
   std::vector<Stored> data_;
-  // Schedule::passes: per pass, the candidate edges (key: float cost bits «
-  // 32 | lower vertex index; then the higher index, the edge index) and the
-  // vertices a collapse of the pass touched.
-  struct Candidate {
-    std::uint64_t key;
-    std::uint32_t b, e;
-  };
+  // Schedule::passes: per pass, the candidate edges (float cost bits « 32 |
+  // edge index, ties then ordered by vertex-index pair) and the vertices a
+  // collapse of the pass touched.
   bool passes_ = false;
-  std::vector<Candidate> cand_;
+  std::vector<std::uint64_t> cand_;
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> ties_; // (vertex-index pair, candidate)
+  // Per edge, its cost at the last pass that computed it (kept while no
+  // collapse touches its ends), or a mark.
+  struct Cost_mark {
+    static constexpr float none = -1.0f;  // the constraints refuse it
+    static constexpr float above = -2.0f; // beyond .max_error
+    static constexpr float dirty = -3.0f; // to compute (in a pass: gone or changed, skip)
+  };
+  std::vector<float> ecost_;
   std::vector<std::uint8_t> touched_;
   double last_cost_ = 0; // of the last collapse() that got as far as the placement
   V last_survivor_{};    // its survivor, once it collapsed
