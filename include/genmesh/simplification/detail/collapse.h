@@ -316,9 +316,7 @@ class Collapser {
       // Slots by face index first (build_grid lays them out in Morton order).
       const std::size_t fb = index_bound(face_index, g_);
       slot_.assign(fb, Face_slot{});
-      slot_face_.resize(fb);
       slot_of_.assign(fb, no_slot);
-      for (std::size_t f = 0; f < fb; ++f) slot_face_[f] = static_cast<std::uint32_t>(f);
       if (const Eigen::AlignedBox3d box = points_box(); !box.isEmpty())
         quantize_ = Quantizer::over(box.min(), box.max());
       for (const F f : faces(g_)) {
@@ -597,20 +595,21 @@ class Collapser {
   // in memory: a query reads a few runs of slots instead of scattered ones.
   // Read from the slots alone (their corners are current), not the mesh;
   // the slots are compacted and permuted in place (a copy of them was the
-  // largest transient of the run).
+  // largest transient of the run). Which face a slot holds is known only
+  // here, from slot_of_ over the live faces (kept, it cost 4 bytes a face
+  // for the whole run).
   void build_grid() {
     grid_.reset(1.0, 0); // frees the old cells first
+    std::vector<std::uint32_t> face_of(slot_.size(), no_slot); // by slot
+    for (const F f : faces(g_)) face_of[slot_of_[fi(f)]] = static_cast<std::uint32_t>(fi(f));
     std::size_t live = 0;
     for (std::size_t s = 0; s < slot_.size(); ++s) {
-      if (!slot_[s].alive()) {
-        slot_of_[slot_face_[s]] = no_slot;
-        continue;
-      }
+      if (!slot_[s].alive()) continue;
       slot_[live] = slot_[s];
-      slot_face_[live++] = slot_face_[s];
+      face_of[live++] = face_of[s];
     }
     slot_.resize(live);
-    slot_face_.resize(live);
+    face_of.resize(live);
     double sum = 0;
     std::size_t n = 0;
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
@@ -632,31 +631,37 @@ class Collapser {
       const Eigen::Vector3d c = ((t.p[0] + t.p[1] + t.p[2]) / 3.0 - lo) / cell;
       order.push_back(morton(c) << 32 | s);
     }
-    std::sort(order.begin(), order.end());
+    {
+      // By the code alone, stably: ties stay in slot order, as a sort of the
+      // whole key would leave them (a tenth of std::sort's instructions).
+      std::vector<std::uint64_t> tmp;
+      genmesh::detail::radix_sort(order, tmp, 32, 30, [](std::uint64_t k) { return k; });
+    }
     constexpr std::uint64_t low = 0xffffffffu;
     // Slot s takes the slot order[s] had: follow each cycle of the
     // permutation, marking placed slots by order[s]'s low half = s.
     for (std::size_t s = 0; s < order.size(); ++s) {
       if ((order[s] & low) == s) continue;
       const Face_slot first = slot_[s];
-      const std::uint32_t first_face = slot_face_[s];
+      const std::uint32_t first_face = face_of[s];
       std::size_t j = s;
       for (;;) {
         const std::size_t k = order[j] & low;
         order[j] = (order[j] & ~low) | j;
         if (k == s) {
           slot_[j] = first;
-          slot_face_[j] = first_face;
+          face_of[j] = first_face;
           break;
         }
         slot_[j] = slot_[k];
-        slot_face_[j] = slot_face_[k];
+        face_of[j] = face_of[k];
         j = k;
       }
     }
     std::vector<std::uint64_t>().swap(order);
+    for (std::size_t s = 0; s < slot_.size(); ++s) slot_of_[face_of[s]] = static_cast<std::uint32_t>(s);
+    std::vector<std::uint32_t>().swap(face_of);
     for (std::size_t s = 0; s < slot_.size(); ++s) {
-      slot_of_[slot_face_[s]] = static_cast<std::uint32_t>(s);
       const auto t = slot_triangle(s);
       grid_.insert(static_cast<std::uint32_t>(s), Box::of(t.p[0], t.p[1], t.p[2]));
     }
@@ -1258,8 +1263,7 @@ class Collapser {
   Quantizer quantize_; // for the slots' and the new faces' boxes
   std::vector<Face_slot> slot_; // in Morton order (see build_grid)
   static constexpr std::uint32_t no_slot = ~std::uint32_t{0};
-  std::vector<std::uint32_t> slot_of_; // by face index; no_slot once dead
-  std::vector<std::uint32_t> slot_face_; // by slot: its face index
+  std::vector<std::uint32_t> slot_of_; // by face index (live faces)
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
   std::vector<H> around_;           // the survivor's incoming halfedges
   std::vector<Short_box> fresh_box_;
