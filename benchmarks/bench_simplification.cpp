@@ -175,9 +175,11 @@ void run_case(benchmark::State& state, Input in, Make make, Run run, Result resu
   state.counters["peak_MB"] = static_cast<double>(peak) / 1e6;
 }
 
-// genmesh's simplify with `Policy` on mesh type G; `guard`: .prevent_self_intersections.
+// genmesh's simplify with `Policy` on mesh type G; `guard`: .prevent_self_intersections;
+// `schedule`: .schedule.
 template <class G, class Policy = genmesh::Plane_quadrics>
-void genmesh_row(benchmark::State& state, Input in, double ratio, bool guard = true) {
+void genmesh_row(benchmark::State& state, Input in, double ratio, bool guard = true,
+                 genmesh::Schedule schedule = genmesh::Schedule::queue) {
   run_case(
       state, in,
       [&] {
@@ -187,7 +189,8 @@ void genmesh_row(benchmark::State& state, Input in, double ratio, bool guard = t
       },
       [&](G& g) {
         genmesh::simplify(g, genmesh::Simplification_options<Policy>{.target_faces = target_faces(in, ratio),
-                                                                      .prevent_self_intersections = guard});
+                                                                      .prevent_self_intersections = guard,
+                                                                      .schedule = schedule});
       },
       [](const G& g) { return std::pair{genmesh::to_soup(g), genmesh::check_mesh(g).ok()}; });
 }
@@ -324,6 +327,13 @@ void register_all() {
     reg("genmesh_Incidence_mesh", [=](benchmark::State& s) { genmesh_row<Incidence_mesh>(s, in, r); });
     reg("genmesh_Halfedge_mesh_no_guard",
         [=](benchmark::State& s) { genmesh_row<Halfedge_mesh>(s, in, r, false); });
+    // Schedule::passes (meshoptimizer's order: sorted passes, no heap), with and without the guard.
+    reg("genmesh_Halfedge_mesh_passes",
+        [=](benchmark::State& s) { genmesh_row<Halfedge_mesh>(s, in, r, true, genmesh::Schedule::passes); });
+    reg("genmesh_Halfedge_mesh_passes_no_guard",
+        [=](benchmark::State& s) { genmesh_row<Halfedge_mesh>(s, in, r, false, genmesh::Schedule::passes); });
+    reg("genmesh_Surface_mesh_passes",
+        [=](benchmark::State& s) { genmesh_row<Surface_mesh>(s, in, r, true, genmesh::Schedule::passes); });
     reg("genmesh_Halfedge_mesh_Lindstrom_Turk",
         [=](benchmark::State& s) { genmesh_row<Halfedge_mesh, genmesh::Lindstrom_turk>(s, in, r); });
     reg("CGAL_GH_plane", [=](benchmark::State& s) {

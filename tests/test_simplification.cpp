@@ -123,10 +123,14 @@ const char* name(Policy p) {
 template <class G>
 genmesh::Simplification_result run(G& g, Policy p, double ratio,
                                    genmesh::Border_mode b = genmesh::Border_mode::preserve,
-                                   std::optional<double> feature_angle = std::nullopt) {
+                                   std::optional<double> feature_angle = std::nullopt,
+                                   genmesh::Schedule schedule = genmesh::Schedule::queue) {
   auto go = [&]<class P>(P policy) {
-    return genmesh::simplify(g, genmesh::Simplification_options<P>{
-                                    .target_ratio = ratio, .policy = policy, .border = b, .feature_angle = feature_angle});
+    return genmesh::simplify(g, genmesh::Simplification_options<P>{.target_ratio = ratio,
+                                                                   .policy = policy,
+                                                                   .border = b,
+                                                                   .feature_angle = feature_angle,
+                                                                   .schedule = schedule});
   };
   switch (p) {
   case Policy::plane: return go(genmesh::Plane_quadrics{});
@@ -174,6 +178,70 @@ TYPED_TEST(Simplification, EveryPolicyKeepsTopologyAndEqualsHalfedgeMesh) {
       }
     }
   }
+}
+
+// Schedule::passes: every policy, a locked border and feature lines on every
+// input; the target is met exactly as with the queue (the run stops at the
+// first collapse that reaches it), the mesh keeps its topology, no face is
+// degenerate, and the soup equals Halfedge_mesh's. The order differs from
+// the queue's, so the meshes do (on the elephant at least). A .max_error run
+// stops by max_error with every collapse within it.
+TYPED_TEST(Simplification, PassesScheduleKeepsTopologyAndEqualsHalfedgeMesh) {
+  constexpr auto passes = genmesh::Schedule::passes;
+  bool differs = false;
+  for (const auto& in : inputs()) {
+    for (const Policy p : all_policies) {
+      for (const bool variant : {false, true}) {
+        if (variant && p != Policy::plane && p != Policy::lindstrom_turk) continue;
+        // The variant: a locked border, and feature lines at 60°.
+        const auto b = variant ? genmesh::Border_mode::lock : genmesh::Border_mode::preserve;
+        const auto features = variant ? std::optional<double>(60.0) : std::nullopt;
+        const std::string what = in.name + " " + name(p) + (variant ? " locked, features" : "");
+        TypeParam g = mesh_of<TypeParam>(in.soup);
+        const auto before = genmesh::check_mesh(g);
+        const auto r = run(g, p, 0.1, b, features, passes);
+        expect_invariants(g, before, what);
+        EXPECT_EQ(r.faces, count(faces(g))) << what;
+        EXPECT_EQ(r.collapses, before.vertices - r.vertices) << what;
+        const auto target = static_cast<std::size_t>(std::ceil(0.1 * static_cast<double>(before.faces)));
+        if (r.stop_reason == genmesh::Stop_reason::target_faces) {
+          EXPECT_LE(r.faces, target) << what;
+          EXPECT_GE(r.faces + 2, target) << what; // the last collapse removes at most two faces
+        } else {
+          EXPECT_EQ(r.stop_reason, genmesh::Stop_reason::no_collapse_left) << what;
+          EXPECT_EQ(b, genmesh::Border_mode::lock) << what;
+        }
+        EXPECT_GT(min_face_area(g), 0.0) << what;
+        if (in.name == "elephant" && p == Policy::plane && !variant) {
+          TypeParam q = mesh_of<TypeParam>(in.soup);
+          run(q, p, 0.1, b, features);
+          differs = canonical_of(q).points != canonical_of(g).points;
+        }
+        if constexpr (std::is_same_v<TypeParam, genmesh_test::Halfedge_mesh>) continue; // the reference itself
+        genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(in.soup);
+        const auto rr = run(ref, p, 0.1, b, features, passes);
+        EXPECT_EQ(rr.collapses, r.collapses) << what;
+        EXPECT_EQ(rr.max_error, r.max_error) << what;
+        expect_same_soup(canonical_of(g), canonical_of(ref), what);
+      }
+    }
+  }
+  EXPECT_TRUE(differs) << "the passes gave the queue's mesh: is the option read?";
+  const Polygon_soup elephant = genmesh::read_soup(genmesh_test::real_mesh("elephant.off"));
+  TypeParam g = mesh_of<TypeParam>(elephant);
+  const double limit = 0.002;
+  const auto r = genmesh::simplify(g, {.max_error = limit, .max_error_relative = true, .schedule = passes});
+  EXPECT_EQ(r.stop_reason, genmesh::Stop_reason::max_error);
+  EXPECT_GT(r.collapses, 0u);
+  const double diagonal = [&] {
+    Eigen::AlignedBox3d box;
+    for (const auto& x : elephant.points) box.extend(x);
+    return box.diagonal().norm();
+  }();
+  EXPECT_LE(r.max_error, limit * diagonal);
+  genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(elephant);
+  genmesh::simplify(ref, {.max_error = limit, .max_error_relative = true, .schedule = passes});
+  expect_same_soup(canonical_of(g), canonical_of(ref), "max_error");
 }
 
 // A locked border keeps every border point where it was.
@@ -426,7 +494,8 @@ TYPED_TEST(Simplification, MinAngleAndMaxValence) {
 }
 
 // Two concentric spheres 3% apart (the inner one facing inwards): coarse
-// enough, either cuts through the other. .prevent_self_intersections (the
+// enough (1.5% of the faces; at 2% whether the unguarded run happens to cut
+// through depends on the quadrics' rounding), either cuts through the other. .prevent_self_intersections (the
 // default) refuses every collapse that would make them meet — the result is
 // free of intersections (genmesh's exact test, and CGAL's on Surface_mesh) —
 // while with it off the same run ends intersecting.
@@ -443,7 +512,7 @@ TYPED_TEST(Simplification, NoSelfIntersections) {
   }
   TypeParam g = mesh_of<TypeParam>(soup);
   ASSERT_FALSE(genmesh::does_self_intersect(g));
-  const auto r = genmesh::simplify(g, {.target_ratio = 0.02});
+  const auto r = genmesh::simplify(g, {.target_ratio = 0.015});
   EXPECT_FALSE(genmesh::does_self_intersect(g));
   EXPECT_LT(r.faces, soup.num_faces() / 4);
   EXPECT_TRUE(genmesh::check_mesh(g).ok());
@@ -451,11 +520,19 @@ TYPED_TEST(Simplification, NoSelfIntersections) {
     EXPECT_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(g));
   }
   TypeParam unguarded = mesh_of<TypeParam>(soup);
-  genmesh::simplify(unguarded, {.target_ratio = 0.02, .prevent_self_intersections = false});
+  genmesh::simplify(unguarded, {.target_ratio = 0.015, .prevent_self_intersections = false});
   EXPECT_TRUE(genmesh::does_self_intersect(unguarded));
   genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(soup);
-  genmesh::simplify(ref, {.target_ratio = 0.02});
+  genmesh::simplify(ref, {.target_ratio = 0.015});
   expect_same_soup(canonical_of(g), canonical_of(ref), "guarded");
+  // The same with Schedule::passes (the guard is called per collapse alike).
+  TypeParam gp = mesh_of<TypeParam>(soup);
+  const auto rp = genmesh::simplify(gp, {.target_ratio = 0.015, .schedule = genmesh::Schedule::passes});
+  EXPECT_FALSE(genmesh::does_self_intersect(gp));
+  EXPECT_LT(rp.faces, soup.num_faces() / 4);
+  genmesh_test::Halfedge_mesh refp = mesh_of<genmesh_test::Halfedge_mesh>(soup);
+  genmesh::simplify(refp, {.target_ratio = 0.015, .schedule = genmesh::Schedule::passes});
+  expect_same_soup(canonical_of(gp), canonical_of(refp), "guarded, passes");
 }
 
 // A flat annulus (the 32 × 32 grid with a hole, dyadic coordinates), in
@@ -990,6 +1067,22 @@ TEST(SimplificationOracle, HausdorffNoWorseThanCgalGarlandHeckbert) {
         SMS::edge_collapse(m, stop, CGAL::parameters::get_cost(gh.get_cost()).get_placement(gh.get_placement()));
       },
       [](SM& m, std::size_t target) { return genmesh::simplify(m, {.target_faces = target}); }, 1.1, 1.4);
+}
+
+// Schedule::passes against CGAL's GH, with the same margins as the queue.
+TEST(SimplificationOracle, PassesHausdorffNoWorseThanCgalGarlandHeckbert) {
+  namespace SMS = CGAL::Surface_mesh_simplification;
+  using SM = genmesh_test::Surface_mesh;
+  expect_no_worse_than_cgal(
+      "GH passes",
+      [](SM& m, const Face_count_stop& stop) {
+        SMS::GarlandHeckbert_plane_policies<SM, genmesh_test::Kernel> gh(m);
+        SMS::edge_collapse(m, stop, CGAL::parameters::get_cost(gh.get_cost()).get_placement(gh.get_placement()));
+      },
+      [](SM& m, std::size_t target) {
+        return genmesh::simplify(m, {.target_faces = target, .schedule = genmesh::Schedule::passes});
+      },
+      1.1, 1.4);
 }
 
 // The same against CGAL's default, Lindstrom–Turk, with genmesh's

@@ -64,6 +64,24 @@ enum class Border_mode {
   free      ///< no special treatment (borders shrink and wander)
 };
 
+/// The order in which simplify() collapses edges.
+enum class Schedule {
+  /// Always the cheapest edge next: a mutable heap of every edge's cost,
+  /// updated after each collapse (the classic order of Garland–Heckbert and
+  /// CGAL).
+  queue,
+  /// In passes (meshoptimizer's design): each pass computes every live edge's
+  /// cost once, takes the cheapest in cost order up to a budget (half the
+  /// faces still to remove, and costs up to 1.5x the cost at that rank), and
+  /// collapses them, skipping an edge once a collapse of this pass changed
+  /// one of its ends (for a memoryless policy or with feature lines: a
+  /// vertex next to its ends). No heap: less memory, and the work is
+  /// sequential; the order differs, so the result does too (as good by the
+  /// Hausdorff oracle tests). Ties by the edge's vertex-index pair; the same
+  /// mesh on every backend.
+  passes
+};
+
 /// Why simplify() stopped.
 enum class Stop_reason {
   target_faces,       ///< the face target (.target_faces or .target_ratio) was reached
@@ -130,6 +148,8 @@ struct Simplification_options {
   std::function<bool(std::size_t edge_index)> edge_is_constrained = {};
   /// Vertices (by vertex index) that never move and never disappear.
   std::function<bool(std::size_t vertex_index)> is_locked = {};
+  /// The collapse order (see Schedule): the cheapest edge each time, or passes.
+  Schedule schedule = Schedule::queue;
 };
 
 /// What simplify() achieved.

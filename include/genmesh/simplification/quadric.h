@@ -127,6 +127,62 @@ struct Quadric {
   }
 };
 
+/// A Quadric stored in 10 floats (40 bytes instead of 80) relative to an
+/// origin o that the owner keeps anyway (simplify: the vertex's own current
+/// point): Q(x) = (x−o)ᵀA(x−o) + 2b'ᵀ(x−o) + c', so b' = b + Ao (half Q's
+/// gradient at o) and c' = Q(o). Near o these terms are of the size of the
+/// errors themselves, so rounding them to float loses ~1e-7 of the error; the
+/// absolute form (xᵀAx + 2bᵀx + c) would cancel terms of size |o|² to get the
+/// error and keep nothing of it in float. Shifting and merging are done in
+/// double (absolute() and of()); only the stored terms are floats.
+struct Relative_quadric {
+  float a00 = 0, a01 = 0, a02 = 0, a11 = 0, a12 = 0, a22 = 0;
+  float b0 = 0, b1 = 0, b2 = 0;
+  float c = 0;
+
+  /// q relative to origin o, rounded to float once per term.
+  static Relative_quadric of(const Quadric& q, const Eigen::Vector3d& o) {
+    const double x = o.x(), y = o.y(), z = o.z();
+    const double g0 = q.a00 * x + q.a01 * y + q.a02 * z + q.b0;
+    const double g1 = q.a01 * x + q.a11 * y + q.a12 * z + q.b1;
+    const double g2 = q.a02 * x + q.a12 * y + q.a22 * z + q.b2;
+    // Q(o) = oᵀAo + 2bᵀo + c = oᵀ(Ao + b) + bᵀo + c.
+    const double co = x * g0 + y * g1 + z * g2 + q.b0 * x + q.b1 * y + q.b2 * z + q.c;
+    Relative_quadric r;
+    r.a00 = static_cast<float>(q.a00);
+    r.a01 = static_cast<float>(q.a01);
+    r.a02 = static_cast<float>(q.a02);
+    r.a11 = static_cast<float>(q.a11);
+    r.a12 = static_cast<float>(q.a12);
+    r.a22 = static_cast<float>(q.a22);
+    r.b0 = static_cast<float>(g0);
+    r.b1 = static_cast<float>(g1);
+    r.b2 = static_cast<float>(g2);
+    r.c = static_cast<float>(co);
+    return r;
+  }
+
+  /// The absolute quadric (in double) of this one relative to origin o.
+  Quadric absolute(const Eigen::Vector3d& o) const {
+    const double x = o.x(), y = o.y(), z = o.z();
+    Quadric q;
+    q.a00 = a00;
+    q.a01 = a01;
+    q.a02 = a02;
+    q.a11 = a11;
+    q.a12 = a12;
+    q.a22 = a22;
+    const double ao0 = q.a00 * x + q.a01 * y + q.a02 * z, ao1 = q.a01 * x + q.a11 * y + q.a12 * z,
+                 ao2 = q.a02 * x + q.a12 * y + q.a22 * z;
+    // b = b' − Ao, c = c' − 2b'ᵀo + oᵀAo.
+    q.b0 = b0 - ao0;
+    q.b1 = b1 - ao1;
+    q.b2 = b2 - ao2;
+    q.c = static_cast<double>(c) + x * (ao0 - 2.0 * b0) + y * (ao1 - 2.0 * b1) + z * (ao2 - 2.0 * b2);
+    return q;
+  }
+};
+
 /// Where a collapse puts the surviving vertex and what it costs there.
 struct Placement {
   double cost = std::numeric_limits<double>::infinity();
