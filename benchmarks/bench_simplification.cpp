@@ -26,6 +26,7 @@
 #include <genmesh/halfedge_mesh.h>
 #include <genmesh/incidence_mesh.h>
 #include <genmesh/io.h>
+#include <genmesh/measures.h>
 #include <genmesh/simplification.h>
 #include <genmesh/soup_to_mesh.h>
 #include <genmesh/subdivision.h>
@@ -373,10 +374,13 @@ const bool registered = (register_all(), register_curve(), true);
 // Rows: Plane_quadrics (the colours not used); Attribute_quadrics<G>
 // (heap-stored quadrics: session 5's code, allocations in every evaluation);
 // Attribute_quadrics<G, 8> (inline storage, same results to the bit);
-// Attribute_quadrics<G, N> with N = 3 + the colour's width (7, 6). The
-// colour map holds Eigen vectors of at most 4 values (inline too), so the
-// rows differ only in the quadrics. Timed: simplify() alone, thread CPU
-// time; counters faces_out and peak_MB (heap peak above the input mesh).
+// Attribute_quadrics<G, N> with N = 3 + the colour's width (7, 6);
+// Hoppe_quadrics<G> (Hoppe 1999, heap storage) and Hoppe_quadrics<G, 4>
+// (inline). The colour map holds Eigen vectors of at most 4 values (inline
+// too), so the rows differ only in the quadrics. Timed: simplify() alone,
+// thread CPU time; counters faces_out, peak_MB (heap peak above the input
+// mesh) and hausdorff (genmesh's seeded symmetric estimate, relative to the
+// bounding-box diagonal; what the attributes cost the geometry).
 //
 //   genmesh_benchmarks --benchmark_filter=AttributeSimplification --benchmark_repetitions=5
 //                      --benchmark_report_aggregates_only=true
@@ -407,13 +411,14 @@ const Coloured_input& coloured_input(bool dino) {
   return dino ? d : a;
 }
 
-// Policy: Plane_quadrics or Attribute_quadrics<Halfedge_mesh, N>.
+// Policy: Plane_quadrics, Attribute_quadrics<Halfedge_mesh, N> or Hoppe_quadrics<Halfedge_mesh, N>.
 template <class Policy>
 void attribute_row(benchmark::State& state, bool dino) {
   const Coloured_input& in = coloured_input(dino);
   using Colour = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 4, 1>;
   long long peak = 0;
   std::size_t faces_out = 0;
+  double hausdorff = -1;
   for (auto _ : state) {
     Halfedge_mesh g;
     genmesh::build_mesh(in.soup, g, {.check = false});
@@ -430,9 +435,17 @@ void attribute_row(benchmark::State& state, bool dino) {
     peak = std::max(peak, genmesh_bench::peak_bytes() - before);
     faces_out = num_faces(g);
     state.SetIterationTime(t1 - t0);
+    if (hausdorff < 0 && genmesh_bench::quality_wanted()) {
+      Halfedge_mesh input;
+      genmesh::build_mesh(in.soup, input, {.check = false});
+      genmesh::Hausdorff_options ho;
+      ho.seed = 7;
+      hausdorff = genmesh::hausdorff_distance(input, g, ho).hausdorff / diagonal(in.soup);
+    }
   }
   state.counters["faces_out"] = static_cast<double>(faces_out);
   state.counters["peak_MB"] = static_cast<double>(peak) / 1e6;
+  if (hausdorff >= 0) state.counters["hausdorff"] = hausdorff;
 }
 
 void register_attribute_rows() {
@@ -449,6 +462,10 @@ void register_attribute_rows() {
       if (dino) attribute_row<genmesh::Attribute_quadrics<Halfedge_mesh, 7>>(s, dino);
       else attribute_row<genmesh::Attribute_quadrics<Halfedge_mesh, 6>>(s, dino);
     });
+    register_row("AttributeSimplification/" + mesh + "/Hoppe_quadrics_heap",
+                 [=](benchmark::State& s) { attribute_row<genmesh::Hoppe_quadrics<Halfedge_mesh>>(s, dino); });
+    register_row("AttributeSimplification/" + mesh + "/Hoppe_quadrics_inline4",
+                 [=](benchmark::State& s) { attribute_row<genmesh::Hoppe_quadrics<Halfedge_mesh, 4>>(s, dino); });
   }
 }
 

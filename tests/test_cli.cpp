@@ -352,6 +352,26 @@ TEST(Cli, SimplifyWithAttributesKeepsAColourSeam) {
   EXPECT_EQ(genmesh("simplify " + in + " " + tmp_path("x.ply") + " --ratio 0.5 --attributes 1 --policy length").exit_code, 2);
   EXPECT_EQ(genmesh("simplify " + in + " " + tmp_path("x.ply") + " --ratio 0.5 --attributes color=").exit_code, 2);
   EXPECT_EQ(genmesh("simplify " + in + " " + tmp_path("x.ply") + " --ratio 0.5 --attributes -1").exit_code, 2);
+
+  // Hoppe's 1999 metric keeps the seam as well, the same file on every backend.
+  std::string hoppe_first;
+  for (const char* backend : {"halfedge", "surface-mesh", "incidence"}) {
+    SCOPED_TRACE(backend);
+    const std::string out = tmp_path(std::string("seam_hoppe_") + backend + ".ply");
+    Cli_run r = genmesh("simplify " + in + " " + out +
+                        " --ratio 0.15 --json --attributes color=0.5 --attribute-metric hoppe --backend " + backend);
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("\"attribute_metric\":\"hoppe\""), std::string::npos) << r.out;
+    if (hoppe_first.empty()) hoppe_first = read_file(out);
+    else EXPECT_EQ(read_file(out), hoppe_first);
+  }
+  const double hoppe = mixed_area(tmp_path("seam_hoppe_halfedge.ply"));
+  std::printf("mixed-colour area with Hoppe's metric: %.4g\n", hoppe);
+  EXPECT_LT(hoppe, 0.5 * without);
+  EXPECT_NE(hoppe_first, first); // another metric, another mesh
+  Cli_run bad = genmesh("simplify " + in + " " + tmp_path("x.ply") + " --ratio 0.5 --attributes 1 --attribute-metric hop");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("unknown attribute metric 'hop' (gh98|hoppe)"), std::string::npos) << bad.err;
 }
 
 } // namespace

@@ -671,28 +671,23 @@ TYPED_TEST(Simplification, AttributeQuadricsKeepAColourSeam) {
   std::vector<double> colour_in(in.points.size());
   for (std::size_t v = 0; v < in.points.size(); ++v)
     colour_in[v] = in.points[v][1] > 0.3 + 0.35 * in.points[v][0] ? 1.0 : 0.0;
-  // The colour as a property map over a vector by vertex index.
-  auto with_attributes = [&]<class G>(G& g, std::vector<double>& colour) {
+  // The colour as a property map over a vector by vertex index; Hoppe's
+  // 1999 metric (Hoppe_quadrics) or Garland–Heckbert's 1998 one.
+  auto with_attributes = [&]<class G>(G& g, std::vector<double>& colour, bool hoppe) {
     colour = colour_in;
     const auto map = boost::make_iterator_property_map(colour.begin(), get(genmesh::vertex_index, std::as_const(g)));
+    if (hoppe)
+      return genmesh::simplify(g, genmesh::Simplification_options<genmesh::Hoppe_quadrics<G>>{
+                                      .target_ratio = 0.15, .policy = {.attributes = {genmesh::vertex_attribute(map, 0.2)}}});
     return genmesh::simplify(g, genmesh::Simplification_options<genmesh::Attribute_quadrics<G>>{
                                     .target_ratio = 0.15, .policy = {.attributes = {genmesh::vertex_attribute(map, 0.2)}}});
   };
-  TypeParam g = mesh_of<TypeParam>(in);
-  const auto before = genmesh::check_mesh(g);
-  std::vector<double> colour;
-  const auto r = with_attributes(g, colour);
-  expect_invariants(g, before, "attribute quadrics");
-  EXPECT_EQ(r.stop_reason, genmesh::Stop_reason::target_faces);
-  const double ours = colour_rms(g, colour, in, colour_in);
-
   TypeParam h = mesh_of<TypeParam>(in);
   std::vector<double> carried = colour_in;
   Carry_colour<TypeParam> carry;
   carry.colour = &carried;
   genmesh::simplify(h, {.target_ratio = 0.15}, carry);
   const double blind = colour_rms(h, carried, in, colour_in);
-  EXPECT_LT(ours, 0.6 * blind) << "attribute quadrics " << ours << ", plane quadrics " << blind;
 
   // Every backend: the same soup and the same colour at each point.
   auto coloured_points = [](const auto& m, const std::vector<double>& c) {
@@ -704,11 +699,23 @@ TYPED_TEST(Simplification, AttributeQuadricsKeepAColourSeam) {
     std::sort(v.begin(), v.end());
     return v;
   };
-  genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(in);
-  std::vector<double> ref_colour;
-  with_attributes(ref, ref_colour);
-  expect_same_soup(canonical_of(g), canonical_of(ref), "attribute quadrics");
-  EXPECT_EQ(coloured_points(g, colour), coloured_points(ref, ref_colour));
+  for (const bool hoppe : {false, true}) {
+    const char* label = hoppe ? "Hoppe quadrics" : "attribute quadrics";
+    TypeParam g = mesh_of<TypeParam>(in);
+    const auto before = genmesh::check_mesh(g);
+    std::vector<double> colour;
+    const auto r = with_attributes(g, colour, hoppe);
+    expect_invariants(g, before, label);
+    EXPECT_EQ(r.stop_reason, genmesh::Stop_reason::target_faces) << label;
+    const double ours = colour_rms(g, colour, in, colour_in);
+    EXPECT_LT(ours, 0.6 * blind) << label << " " << ours << ", plane quadrics " << blind;
+
+    genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(in);
+    std::vector<double> ref_colour;
+    with_attributes(ref, ref_colour, hoppe);
+    expect_same_soup(canonical_of(g), canonical_of(ref), label);
+    EXPECT_EQ(coloured_points(g, colour), coloured_points(ref, ref_colour)) << label;
+  }
 }
 
 // Several attributes of different value types, each a vertex property map
@@ -726,7 +733,7 @@ struct Coloured_run {
   double moved = 0;             // largest distance of a survivor from its input point
 };
 
-template <class G, int MaxDimension = Eigen::Dynamic>
+template <class G, class Policy = genmesh::Attribute_quadrics<G>>
 Coloured_run simplify_coloured(const Polygon_soup& in, bool with_attributes) {
   using V = genmesh::vertex_descriptor_t<G>;
   G g = mesh_of<G>(in);
@@ -744,7 +751,7 @@ Coloured_run simplify_coloured(const Polygon_soup& in, bool with_attributes) {
   }
   genmesh::Simplification_result r;
   if (with_attributes) {
-    r = genmesh::simplify(g, genmesh::Simplification_options<genmesh::Attribute_quadrics<G, MaxDimension>>{
+    r = genmesh::simplify(g, genmesh::Simplification_options<Policy>{
                                  .target_ratio = 0.1,
                                  .policy = {.attributes = {genmesh::vertex_attribute(colour, 0.2, "colour"),
                                                            genmesh::vertex_attribute(uv, 0.5, "uv"),
@@ -794,9 +801,25 @@ TYPED_TEST(Simplification, AttributeQuadricsOverSeveralPropertyMaps) {
   EXPECT_EQ(ours.values, ref.values);
 
   // The inline-storage quadrics (3 + 6 values fit in 9) give the same bits.
-  const Coloured_run inline_storage = simplify_coloured<TypeParam, 9>(in, true);
+  const Coloured_run inline_storage = simplify_coloured<TypeParam, genmesh::Attribute_quadrics<TypeParam, 9>>(in, true);
   expect_same_soup(inline_storage.soup, ours.soup, "attribute quadrics, inline storage");
   EXPECT_EQ(inline_storage.values, ours.values);
+
+  // Hoppe's 1999 metric: the same properties, the same results on every
+  // backend and with inline storage (6 values).
+  const Coloured_run hoppe = simplify_coloured<TypeParam, genmesh::Hoppe_quadrics<TypeParam>>(in, true);
+  std::printf("Hoppe: near the equator %zu; colour error %.3g; uv error %.3g (moved up to %.3g)\n",
+              hoppe.near_equator, hoppe.colour_error, hoppe.uv_error, hoppe.moved);
+  EXPECT_GT(hoppe.near_equator, 2 * blind.near_equator);
+  EXPECT_LT(hoppe.colour_error, 0.05);
+  EXPECT_LT(hoppe.uv_error, 0.25 * hoppe.moved);
+  const Coloured_run hoppe_ref =
+      simplify_coloured<genmesh_test::Halfedge_mesh, genmesh::Hoppe_quadrics<genmesh_test::Halfedge_mesh>>(in, true);
+  expect_same_soup(hoppe.soup, hoppe_ref.soup, "Hoppe quadrics, several maps");
+  EXPECT_EQ(hoppe.values, hoppe_ref.values);
+  const Coloured_run hoppe_inline = simplify_coloured<TypeParam, genmesh::Hoppe_quadrics<TypeParam, 6>>(in, true);
+  expect_same_soup(hoppe_inline.soup, hoppe.soup, "Hoppe quadrics, inline storage");
+  EXPECT_EQ(hoppe_inline.values, hoppe.values);
   // A bound the attributes do not fit is refused before any change.
   TypeParam g = mesh_of<TypeParam>(in);
   auto uv = genmesh::scratch_property<std::array<double, 2>>(genmesh::vertex_index, g);
@@ -808,7 +831,55 @@ TYPED_TEST(Simplification, AttributeQuadricsOverSeveralPropertyMaps) {
   } catch (const genmesh::invalid_input& e) {
     EXPECT_NE(std::string(e.what()).find("holds at most 1"), std::string::npos) << e.what();
   }
+  try {
+    genmesh::simplify(g, genmesh::Simplification_options<genmesh::Hoppe_quadrics<TypeParam, 1>>{
+                             .target_ratio = 0.1, .policy = {.attributes = {genmesh::vertex_attribute(uv, 1.0, "uv")}}});
+    ADD_FAILURE() << "2 values accepted by Hoppe_quadrics<G, 1>";
+  } catch (const genmesh::invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("Hoppe_quadrics<G, 1> holds at most 1"), std::string::npos) << e.what();
+  }
   EXPECT_EQ(num_faces(g), faces);
+}
+
+// Hoppe's face quadric is what the paper defines: at any point x and values
+// s, the squared distance of x to the face's plane plus, per value, the
+// squared difference between s and the face's linear interpolation of its
+// corners' values at x's projection (area-weighted: times the area); zero
+// at the corners with their own values; its best values at a point are that
+// interpolation.
+TEST(HoppeQuadric, MeasuresPlaneDistanceAndInterpolationError) {
+  using G = genmesh_test::Halfedge_mesh;
+  const std::array<Eigen::Vector3d, 3> p{Eigen::Vector3d(0.2, 0.1, 0.3), Eigen::Vector3d(1.7, 0.4, -0.2),
+                                         Eigen::Vector3d(0.5, 1.3, 0.6)};
+  Polygon_soup tri;
+  for (const auto& x : p) tri.add_point(x);
+  tri.add_face({0, 1, 2});
+  G g = mesh_of<G>(tri);
+  std::vector<std::array<double, 2>> uv{{{0.1, 5.0}}, {{0.9, 4.0}}, {{0.3, 7.5}}};
+  const auto map = boost::make_iterator_property_map(uv.begin(), get(genmesh::vertex_index, std::as_const(g)));
+  for (const bool area : {false, true}) {
+    genmesh::Hoppe_quadrics<G> policy{.attributes = {genmesh::vertex_attribute(map, 2.0, "uv")}, .area_weighted = area};
+    policy.start(g);
+    const auto q = policy.face(0, p[0], 1, p[1], 2, p[2]);
+    const Eigen::Vector3d n2 = (p[1] - p[0]).cross(p[2] - p[0]);
+    const Eigen::Vector3d n = n2.normalized();
+    const double w = area ? 0.5 * n2.norm() : 1.0;
+    for (int i = 0; i < 3; ++i)
+      EXPECT_NEAR(q(p[i], Eigen::Vector2d(2.0 * uv[i][0], 2.0 * uv[i][1])), 0.0, 1e-12) << "corner " << i;
+    const Eigen::Vector3d x(0.9, 0.2, 1.4);
+    // x's projection in barycentric coordinates, then the interpolation.
+    const Eigen::Vector3d y = x - n.dot(x - p[0]) * n;
+    const double total = n2.norm();
+    const double l1 = n.dot((p[2] - y).cross(p[0] - y)) / total, l2 = n.dot((p[0] - y).cross(p[1] - y)) / total;
+    const double l0 = 1 - l1 - l2;
+    Eigen::Vector2d interp;
+    for (int j = 0; j < 2; ++j) interp[j] = 2.0 * (l0 * uv[0][j] + l1 * uv[1][j] + l2 * uv[2][j]);
+    const Eigen::Vector2d s(3.0, 9.0);
+    const double plane = n.dot(x - p[0]);
+    EXPECT_NEAR(q(x, s), w * (plane * plane + (s - interp).squaredNorm()), 1e-9);
+    const Eigen::Vector2d best = q.best_values(x);
+    EXPECT_NEAR((best - interp).norm(), 0.0, 1e-9);
+  }
 }
 
 // ---------------------------------------------------------------------------

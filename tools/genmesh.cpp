@@ -9,6 +9,7 @@
 //   genmesh simplify IN OUT (--faces N | --ratio R | --error E) [--features DEG]
 //                          [--policy quadric|probabilistic|lindstrom-turk|length]
 //                          [--boundary preserve|lock|free] [--attributes W|NAME=W,...]
+//                          [--attribute-metric gh98|hoppe]
 //                          [--backend B] [--json]
 //   genmesh remesh IN OUT  [--edge-length L | --relative R] [--iterations N]
 //                          [--features DEG] [--adaptive MIN MAX ERR]
@@ -144,6 +145,8 @@ const char* usage_text =
     "                     vt/vn/colours) in the\n"
     "                     quadrics, every one at weight W or each named one at its W; the\n"
     "                     output gets the survivors' optimal values\n"
+    "  --attribute-metric M   simplify --attributes: gh98 (Garland-Heckbert 1998, default)\n"
+    "                     or hoppe (Hoppe 1999: plane distance plus interpolation error)\n"
     "  --features DEG     simplify: edges whose faces meet at DEG degrees or more are feature\n"
     "                     lines: collapses run along them, never across; corners stay\n"
     "                     remesh: edges sharper than DEG degrees are kept as feature lines\n"
@@ -176,6 +179,7 @@ struct Args {
   std::optional<double> features;  // simplify --features DEG
   // simplify --attributes: (name, weight); the name "" stands for every attribute
   std::vector<std::pair<std::string, double>> attribute_weights;
+  std::string attribute_metric = "gh98"; // simplify --attribute-metric: gh98 (Attribute_quadrics) | hoppe (Hoppe_quadrics)
   bool boundary_given = false;
   std::size_t samples = 0;  // measure --samples
   // remesh (and --features)
@@ -267,6 +271,9 @@ Args parse(int argc, char** argv) {
     } else if (s == "--attributes") {
       if (i + 1 >= argc) throw usage_error("--attributes needs a value: W or NAME=W[,NAME=W...]");
       parse_attribute_weights(argv[++i], a.attribute_weights);
+    } else if (s == "--attribute-metric") {
+      if (i + 1 >= argc) throw usage_error("--attribute-metric needs a value: gh98|hoppe");
+      a.attribute_metric = argv[++i];
     } else if (s == "--scheme" || s == "--levels" || s == "--boundary" || s == "--creases" ||
                s == "--max-file-size" || s == "--max-memory") {
       if (i + 1 >= argc) throw usage_error(s + " needs a value");
@@ -359,6 +366,8 @@ Args parse(int argc, char** argv) {
       throw usage_error("unknown policy '" + a.policy + "' (quadric|probabilistic|lindstrom-turk|length)");
     if (!a.attribute_weights.empty() && a.policy != "quadric")
       throw usage_error("--attributes works with --policy quadric only");
+    if (a.attribute_metric != "gh98" && a.attribute_metric != "hoppe")
+      throw usage_error("unknown attribute metric '" + bounded(a.attribute_metric, 40) + "' (gh98|hoppe)");
     if (!a.boundary_given) a.boundary = "preserve";
     if (a.boundary != "preserve" && a.boundary != "lock" && a.boundary != "free")
       throw usage_error("unknown boundary mode '" + a.boundary + "' (preserve|lock|free)");
@@ -918,7 +927,16 @@ struct Cli_attributes {
   // weighted_width() fits).
   template <int N = Eigen::Dynamic>
   genmesh::Attribute_quadrics<Mesh, N> policy() const {
-    genmesh::Attribute_quadrics<Mesh, N> q;
+    return fill<genmesh::Attribute_quadrics<Mesh, N>>();
+  }
+  // Hoppe's 1999 metric over the same attributes (N: the values' bound).
+  template <int N = Eigen::Dynamic>
+  genmesh::Hoppe_quadrics<Mesh, N> hoppe_policy() const {
+    return fill<genmesh::Hoppe_quadrics<Mesh, N>>();
+  }
+  template <class Policy>
+  Policy fill() const {
+    Policy q;
     for (std::size_t k = 0; k < channels.size(); ++k) {
       if (weights[k] <= 0) continue;
       const bool byte_colour = channels[k]->name == "color" && channels[k]->type != genmesh::Scalar_type::float32 &&
@@ -982,7 +1000,11 @@ int cmd_simplify(const Args& a) {
       // Up to 5 values (an RGBA colour; a colour and texture coordinates) the
       // quadrics are stored inline, in 7 × 7 or 8 × 8 matrices (a larger bound
       // than needed costs memory: docs/benchmarks.md).
-      else if (const std::size_t w = attributes.weighted_width(); w > 0 && w <= 4)
+      else if (const std::size_t w = attributes.weighted_width(); w > 0 && a.attribute_metric == "hoppe")
+        r = w <= 4 ? simplify_with(mesh, a, progress, attributes.template hoppe_policy<4>())
+            : w == 5 ? simplify_with(mesh, a, progress, attributes.template hoppe_policy<5>())
+                     : simplify_with(mesh, a, progress, attributes.hoppe_policy());
+      else if (w > 0 && w <= 4)
         r = simplify_with(mesh, a, progress, attributes.template policy<7>());
       else if (w == 5) r = simplify_with(mesh, a, progress, attributes.template policy<8>());
       else if (w > 5) r = simplify_with(mesh, a, progress, attributes.policy());
@@ -1013,7 +1035,8 @@ int cmd_simplify(const Args& a) {
     if (a.json) {
       std::cout << "{\"command\":\"simplify\",\"file\":\"" << json_escape(a.files[0]) << "\",\"output\":\""
                 << json_escape(a.files[1]) << "\",\"backend\":\"" << a.backend << "\",\"policy\":\"" << a.policy
-                << "\",\"attributes\":" << attributes.json() << ",\"collapses\":" << r.collapses
+                << "\",\"attributes\":" << attributes.json() << ",\"attribute_metric\":\"" << a.attribute_metric
+                << "\",\"collapses\":" << r.collapses
                 << ",\"max_error\":" << r.max_error << ",\"stop_reason\":\"" << genmesh::to_string(r.stop_reason)
                 << "\"," << json_counts(report) << ",\"min_angle\":" << json_number(q.min_angle)
                 << ",\"angles_below_30\":" << json_number(q.angles_below_30)

@@ -12,8 +12,9 @@
 // attributes' property maps. So an edge across a colour or UV seam costs
 // what the seam would lose, and the survivor gets the values that fit its
 // neighbourhood best.
-// (Hoppe's 1999 metric is a variant of this one with a smaller matrix; the
-// minimizer is the same for k ≤ 3 up to the weighting of the geometric term.)
+// Hoppe_quadrics (below) is Hoppe's 1999 metric over the same attributes:
+// plain plane distance plus each value's deviation from its face's linear
+// interpolation, with a smaller quadric and a 3 × 3 solve.
 //
 // The attributes are vertex property maps, each with a weight (any number of
 // them, of any value type genmesh::Attribute_traits knows: a number, an
@@ -175,6 +176,94 @@ struct Attribute_state {
   std::vector<double> values;           // weighted values, by vertex index × dimension
   std::vector<Vertex> vertex;           // by vertex index
 };
+
+// Reads every live vertex's values of `attributes` into `s` (weighted),
+// checking weights, widths and finiteness. max_values < 0: no bound; else
+// more values per vertex than that are refused, naming the policy type
+// `bound_name` in the message.
+template <class G, class Vertex>
+void read_attributes(const std::vector<Vertex_attribute<Vertex>>& attributes, const G& g, Attribute_state<Vertex>& s,
+                     int max_values, const std::string& bound_name) {
+  s = {};
+  const auto vindex = get(vertex_index, g);
+  const std::size_t vb = index_bound(vertex_index, g);
+  s.vertex.resize(vb);
+  std::vector<std::size_t> live;
+  for (const Vertex v : vertices(g)) {
+    const auto i = static_cast<std::size_t>(get(vindex, v));
+    s.vertex[i] = v;
+    live.push_back(i);
+  }
+  std::vector<double> x;
+  std::vector<std::size_t> width(attributes.size(), 0);
+  for (std::size_t k = 0; k < attributes.size(); ++k) {
+    const auto& a = attributes[k];
+    if (!(a.weight > 0) || !std::isfinite(a.weight))
+      throw invalid_input("simplify: attribute '" + a.name + "' has weight " + std::to_string(a.weight) +
+                          " (a positive finite number is needed)");
+    if (!a.read) throw invalid_input("simplify: attribute '" + a.name + "' has no read function");
+    if (live.empty()) continue;
+    a.read(s.vertex[live.front()], x);
+    if (x.empty())
+      throw invalid_input("simplify: attribute '" + a.name + "' has no values at vertex " +
+                          std::to_string(live.front()));
+    width[k] = x.size();
+  }
+  s.offset.push_back(0);
+  for (std::size_t k = 0; k < attributes.size(); ++k) {
+    s.offset.push_back(s.offset.back() + width[k]);
+    s.weight.insert(s.weight.end(), width[k], attributes[k].weight);
+  }
+  s.dimension = s.offset.back();
+  if (max_values >= 0 && s.dimension > static_cast<std::size_t>(max_values))
+    throw invalid_input("simplify: the attributes have " + std::to_string(s.dimension) + " values per vertex; " +
+                        bound_name + " holds at most " + std::to_string(max_values) +
+                        " (use a larger bound or Eigen::Dynamic)");
+  s.values.assign(vb * s.dimension, 0.0);
+  for (std::size_t k = 0; k < attributes.size(); ++k) {
+    const auto& a = attributes[k];
+    for (const std::size_t i : live) {
+      a.read(s.vertex[i], x);
+      if (x.size() != width[k])
+        throw invalid_input("simplify: attribute '" + a.name + "' has " + std::to_string(x.size()) +
+                            " values at vertex " + std::to_string(i) + " but " + std::to_string(width[k]) +
+                            " at vertex " + std::to_string(live.front()));
+      for (std::size_t j = 0; j < x.size(); ++j) {
+        if (!std::isfinite(x[j]))
+          throw invalid_input("simplify: attribute '" + a.name + "' has a non-finite value at vertex " +
+                              std::to_string(i));
+        s.values[i * s.dimension + s.offset[k] + j] = a.weight * x[j];
+      }
+    }
+  }
+}
+
+// The cheapest placement of a, b and their midpoint (ties in that order):
+// the attribute policies' fallback when the optimal point is refused.
+template <class At>
+Placement best_of_ends_and_midpoint(const At& at, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  Placement r = at(a);
+  const Placement pb = at(b);
+  if (pb.cost < r.cost) r = pb;
+  const Placement pm = at(0.5 * (a + b));
+  if (pm.cost < r.cost) r = pm;
+  return r;
+}
+
+// Writes the survivor's weighted values (s.dimension of them at `weighted`),
+// unweighted, into each writable attribute's map.
+template <class Vertex>
+void write_attributes(const std::vector<Vertex_attribute<Vertex>>& attributes, const Attribute_state<Vertex>& s,
+                      std::size_t survivor, const double* weighted) {
+  std::vector<double> values;
+  for (std::size_t k = 0; k < attributes.size(); ++k) {
+    if (!attributes[k].write) continue;
+    const std::size_t o = s.offset[k], n = s.offset[k + 1] - o;
+    values.resize(n);
+    for (std::size_t i = 0; i < n; ++i) values[i] = weighted[o + i] / s.weight[o + i];
+    attributes[k].write(s.vertex[survivor], values.data(), n);
+  }
+}
 } // namespace detail::simplification
 
 /// Garland–Heckbert 1998 quadrics over position and the values of
@@ -215,60 +304,8 @@ struct Attribute_quadrics {
   /// weight that is not positive and finite, a non-finite value, an empty
   /// value, or a vertex whose value has another width than the first vertex's.
   void start(const G& g) {
-    auto& s = state;
-    s = {};
-    const auto vindex = get(vertex_index, g);
-    const std::size_t vb = index_bound(vertex_index, g);
-    s.vertex.resize(vb);
-    std::vector<std::size_t> live;
-    for (const Vertex v : vertices(g)) {
-      const auto i = static_cast<std::size_t>(get(vindex, v));
-      s.vertex[i] = v;
-      live.push_back(i);
-    }
-    std::vector<double> x;
-    std::vector<std::size_t> width(attributes.size(), 0);
-    for (std::size_t k = 0; k < attributes.size(); ++k) {
-      const auto& a = attributes[k];
-      if (!(a.weight > 0) || !std::isfinite(a.weight))
-        throw invalid_input("simplify: attribute '" + a.name + "' has weight " + std::to_string(a.weight) +
-                            " (a positive finite number is needed)");
-      if (!a.read) throw invalid_input("simplify: attribute '" + a.name + "' has no read function");
-      if (live.empty()) continue;
-      a.read(s.vertex[live.front()], x);
-      if (x.empty())
-        throw invalid_input("simplify: attribute '" + a.name + "' has no values at vertex " +
-                            std::to_string(live.front()));
-      width[k] = x.size();
-    }
-    s.offset.push_back(0);
-    for (std::size_t k = 0; k < attributes.size(); ++k) {
-      s.offset.push_back(s.offset.back() + width[k]);
-      s.weight.insert(s.weight.end(), width[k], attributes[k].weight);
-    }
-    s.dimension = s.offset.back();
-    if (MaxDimension != Eigen::Dynamic && 3 + s.dimension > static_cast<std::size_t>(MaxDimension))
-      throw invalid_input("simplify: the attributes have " + std::to_string(s.dimension) +
-                          " values per vertex; Attribute_quadrics<G, " + std::to_string(MaxDimension) +
-                          "> holds at most " + std::to_string(MaxDimension - 3) +
-                          " (use a larger bound or Eigen::Dynamic)");
-    s.values.assign(vb * s.dimension, 0.0);
-    for (std::size_t k = 0; k < attributes.size(); ++k) {
-      const auto& a = attributes[k];
-      for (const std::size_t i : live) {
-        a.read(s.vertex[i], x);
-        if (x.size() != width[k])
-          throw invalid_input("simplify: attribute '" + a.name + "' has " + std::to_string(x.size()) +
-                              " values at vertex " + std::to_string(i) + " but " + std::to_string(width[k]) +
-                              " at vertex " + std::to_string(live.front()));
-        for (std::size_t j = 0; j < x.size(); ++j) {
-          if (!std::isfinite(x[j]))
-            throw invalid_input("simplify: attribute '" + a.name + "' has a non-finite value at vertex " +
-                                std::to_string(i));
-          s.values[i * s.dimension + s.offset[k] + j] = a.weight * x[j];
-        }
-      }
-    }
+    detail::simplification::read_attributes(attributes, g, state, MaxDimension == Eigen::Dynamic ? -1 : MaxDimension - 3,
+                                            "Attribute_quadrics<G, " + std::to_string(MaxDimension) + ">");
   }
 
   /// A triangle's contribution (corners with their vertex indices, so that
@@ -299,12 +336,8 @@ struct Attribute_quadrics {
       const double limit = max_distance_factor * max_distance_factor * (b - a).squaredNorm();
       if (v.allFinite() && (x - 0.5 * (a + b)).squaredNorm() <= limit) return {q(v), x};
     }
-    Placement r = fixed(q, a, b, a);
-    const Placement pb = fixed(q, a, b, b);
-    if (pb.cost < r.cost) r = pb;
-    const Placement pm = fixed(q, a, b, 0.5 * (a + b));
-    if (pm.cost < r.cost) r = pm;
-    return r;
+    return detail::simplification::best_of_ends_and_midpoint(
+        [&](const Eigen::Vector3d& x) { return fixed(q, a, b, x); }, a, b);
   }
 
   /// The cost at position x with the best attribute values there.
@@ -318,14 +351,7 @@ struct Attribute_quadrics {
   void collapsed(std::size_t survivor, const Vertex_data& q, const Eigen::Vector3d& x) const {
     if (dimension() == 0 || q.dimension() == 0) return;
     const typename Vertex_data::Vector v = best_at(q, x);
-    std::vector<double> values;
-    for (std::size_t k = 0; k < attributes.size(); ++k) {
-      if (!attributes[k].write) continue;
-      const std::size_t o = state.offset[k], n = state.offset[k + 1] - o;
-      values.resize(n);
-      for (std::size_t i = 0; i < n; ++i) values[i] = v[3 + static_cast<Eigen::Index>(o + i)] / state.weight[o + i];
-      attributes[k].write(state.vertex[survivor], values.data(), n);
-    }
+    detail::simplification::write_attributes(attributes, state, survivor, v.data() + 3);
   }
 
  private:
@@ -352,6 +378,176 @@ struct Attribute_quadrics {
     const typename Vertex_data::Vector rhs = -(q.a.bottomLeftCorner(k, 3) * x + q.b.tail(k));
     v.tail(k) = ass.ldlt().solve(rhs);
     return v;
+  }
+};
+
+/// Hoppe's quadric over position x ∈ R^3 and k weighted attribute values
+/// s ∈ R^k ("New quadric metric for simplifying meshes with appearance
+/// attributes", IEEE Visualization 1999): Q(x, s) = xᵀAx + 2xᵀPs + α sᵀs +
+/// 2bₓᵀx + 2bₛᵀs + c. Of the (3+k)² matrix of Garland–Heckbert 1998 it
+/// keeps A (3 × 3), P (3 × k) and a multiple α of the identity: 11 + 4k
+/// numbers instead of (3+k)(4+k)/2 + 4 (k = 3: 23 instead of 25; k = 8:
+/// 43 instead of 71). MaxValues bounds k at compile time (inline storage).
+template <int MaxValues = Eigen::Dynamic>
+struct Basic_hoppe_quadric {
+  using Values = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, MaxValues, 1>;
+  using Gradients = Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::ColMajor, 3, MaxValues>;
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+  Gradients p;                                 // x–s coupling, 3 × k
+  Eigen::Vector3d bx = Eigen::Vector3d::Zero();
+  Values bs;                                   // k
+  double alpha = 0, c = 0;
+  bool empty = true;                           // the zero quadric of any k
+
+  friend Basic_hoppe_quadric operator+(const Basic_hoppe_quadric& x, const Basic_hoppe_quadric& y) {
+    if (x.empty) return y;
+    if (y.empty) return x;
+    return {x.a + y.a, x.p + y.p, x.bx + y.bx, x.bs + y.bs, x.alpha + y.alpha, x.c + y.c, false};
+  }
+
+  /// Q(x, s), clamped at 0.
+  double operator()(const Eigen::Vector3d& x, const Values& s) const {
+    if (empty) return 0.0;
+    const double r = x.dot(a * x) + 2 * x.dot(p * s) + alpha * s.squaredNorm() + 2 * bx.dot(x) + 2 * bs.dot(s) + c;
+    return r > 0 ? r : 0.0;
+  }
+
+  /// The values minimizing Q(x, ·): s = −(Pᵀx + bₛ)/α (zero when no face
+  /// constrains them, α = 0).
+  Values best_values(const Eigen::Vector3d& x) const {
+    if (!(alpha > 0)) return Values::Zero(bs.size());
+    return -(p.transpose() * x + bs) / alpha;
+  }
+};
+
+/// The quadric of Hoppe_quadrics<G> (heap-stored, any number of values).
+using Hoppe_quadric = Basic_hoppe_quadric<>;
+
+/// Hoppe 1999 quadrics over position and the values of `attributes` (vertex
+/// property maps with weights, as Attribute_quadrics): a face contributes
+/// the squared distance of a point to its plane plus, for each value, the
+/// squared difference between the value and the face's linear interpolation
+/// of its corners' values at that point (a gradient in the face's plane).
+/// Against Attribute_quadrics (Garland–Heckbert 1998) the geometric error is
+/// the plain distance to the face's plane whatever the attributes' weights
+/// (the 1998 metric measures distance in R^(3+k), so a heavily weighted
+/// attribute tilts the geometry), the quadric is smaller (see
+/// Basic_hoppe_quadric), and the optimal point needs only a 3 × 3 solve
+/// (the values follow from the position). Same interface, same guarantees
+/// (determinism, values written back to writable maps).
+///
+/// MaxValues (Eigen::Dynamic by default): with a number k ≥ the total
+/// number of attribute values, quadrics are stored inline, with the same
+/// results to the bit; start() refuses attributes that do not fit.
+template <class G, int MaxValues = Eigen::Dynamic>
+struct Hoppe_quadrics {
+  using Vertex = vertex_descriptor_t<G>;
+  /// The attributes, each a map and a weight: vertex_attribute(map, weight).
+  std::vector<Vertex_attribute<Vertex>> attributes = {};
+  /// Weight each triangle's quadric by its area.
+  bool area_weighted = false;
+  /// The optimal point is refused (the best of the ends and the midpoint
+  /// taken instead) when the 3 × 3 system's LU pivots fall below this times
+  /// the largest.
+  double conditioning = 1e-9;
+  /// The optimal position may be at most this many edge lengths from the midpoint.
+  double max_distance_factor = 2.0;
+  /// Filled by start() (simplify calls it): leave it alone.
+  detail::simplification::Attribute_state<Vertex> state = {};
+
+  using Vertex_data = Basic_hoppe_quadric<MaxValues>;
+  using Values = typename Vertex_data::Values;
+
+  /// Values per vertex, all attributes together (known after start()).
+  std::size_t dimension() const { return state.dimension; }
+
+  /// Reads every vertex's values; refusals as Attribute_quadrics::start.
+  void start(const G& g) {
+    detail::simplification::read_attributes(attributes, g, state, MaxValues == Eigen::Dynamic ? -1 : MaxValues,
+                                            "Hoppe_quadrics<G, " + std::to_string(MaxValues) + ">");
+  }
+
+  /// A triangle's contribution (corners with their vertex indices).
+  Vertex_data face(std::size_t ia, const Eigen::Vector3d& a, std::size_t ib, const Eigen::Vector3d& b, std::size_t ic,
+                   const Eigen::Vector3d& c) const {
+    const auto k = static_cast<Eigen::Index>(dimension());
+    Vertex_data q{Eigen::Matrix3d::Zero(), Vertex_data::Gradients::Zero(3, k), Eigen::Vector3d::Zero(),
+                  Values::Zero(k), 0.0, 0.0, false};
+    const Eigen::Vector3d n2 = triangle_normal(a, b, c);
+    const double len = n2.norm();
+    if (!(len > 0)) return q; // a degenerate face constrains nothing
+    const Eigen::Vector3d n = n2 / len;
+    const double w = area_weighted ? 0.5 * len : 1.0;
+    const double d = -n.dot(a);
+    q.a = w * n * n.transpose();
+    q.bx = w * d * n;
+    q.c = w * d * d;
+    q.alpha = w;
+    // Each value's gradient g in the face's plane and offset e: g·x + e
+    // interpolates the corners' values, g·n = 0.
+    Eigen::Matrix3d m;
+    m.row(0) = (b - a).transpose();
+    m.row(1) = (c - a).transpose();
+    m.row(2) = n.transpose();
+    const Eigen::Matrix3d inv = m.inverse();
+    const double* va = &state.values[ia * dimension()];
+    const double* vb = &state.values[ib * dimension()];
+    const double* vc = &state.values[ic * dimension()];
+    for (Eigen::Index j = 0; j < k; ++j) {
+      const Eigen::Vector3d g = inv * Eigen::Vector3d(vb[j] - va[j], vc[j] - va[j], 0.0);
+      const double e = va[j] - g.dot(a);
+      q.a += w * g * g.transpose();
+      q.p.col(j) = -w * g;
+      q.bx += w * e * g;
+      q.bs[j] = -w * e;
+      q.c += w * e * e;
+    }
+    return q;
+  }
+
+  /// The border quadric of Plane_quadrics, on the position only.
+  Vertex_data border(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, double weight) const {
+    const Quadric q = detail::simplification::border_plane(a, b, c, weight, area_weighted);
+    const auto k = static_cast<Eigen::Index>(dimension());
+    Vertex_data g{Eigen::Matrix3d::Zero(), Vertex_data::Gradients::Zero(3, k), Eigen::Vector3d(q.b0, q.b1, q.b2),
+                  Values::Zero(k), 0.0, q.c, false};
+    g.a << q.a00, q.a01, q.a02, q.a01, q.a11, q.a12, q.a02, q.a12, q.a22;
+    return g;
+  }
+
+  /// The optimal position: (A − PPᵀ/α) x = −bₓ + P bₛ/α (the values
+  /// eliminated), refused as Attribute_quadrics refuses its solution.
+  Placement place(const Vertex_data& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+    if (q.empty) return {0.0, 0.5 * (a + b)};
+    Eigen::Matrix3d m = q.a;
+    Eigen::Vector3d rhs = -q.bx;
+    if (q.alpha > 0) {
+      m -= q.p * q.p.transpose() / q.alpha;
+      rhs += q.p * q.bs / q.alpha;
+    }
+    Eigen::FullPivLU<Eigen::Matrix3d> lu(m);
+    lu.setThreshold(conditioning);
+    if (lu.isInvertible()) {
+      const Eigen::Vector3d x = lu.solve(rhs);
+      const double limit = max_distance_factor * max_distance_factor * (b - a).squaredNorm();
+      if (x.allFinite() && (x - 0.5 * (a + b)).squaredNorm() <= limit) return {q(x, q.best_values(x)), x};
+    }
+    return detail::simplification::best_of_ends_and_midpoint(
+        [&](const Eigen::Vector3d& x) { return fixed(q, a, b, x); }, a, b);
+  }
+
+  /// The cost at position x with the best values there.
+  Placement fixed(const Vertex_data& q, const Eigen::Vector3d&, const Eigen::Vector3d&, const Eigen::Vector3d& x) const {
+    if (q.empty) return {0.0, x};
+    return {q(x, q.best_values(x)), x};
+  }
+
+  /// After a collapse: the survivor's best values at its position, written
+  /// to each writable map.
+  void collapsed(std::size_t survivor, const Vertex_data& q, const Eigen::Vector3d& x) const {
+    if (dimension() == 0 || q.empty || !(q.alpha > 0)) return;
+    const Values s = q.best_values(x);
+    detail::simplification::write_attributes(attributes, state, survivor, s.data());
   }
 };
 
