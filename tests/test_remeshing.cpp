@@ -397,7 +397,7 @@ TYPED_TEST(Remeshing, RenumberPutsElementsInTheGivenOrder) {
     const auto h = halfedge(e, g);
     epts.push_back(pt(source(h, g))), epts.push_back(pt(target(h, g)));
   }
-  for (const F f : fs) {
+  auto corners = [&](F f) { // the face's corner points, as a set
     std::set<std::array<double, 3>> c;
     const auto h0 = halfedge(f, g);
     auto h = h0;
@@ -406,8 +406,9 @@ TYPED_TEST(Remeshing, RenumberPutsElementsInTheGivenOrder) {
       c.insert({p.x(), p.y(), p.z()});
       h = next(h, g);
     } while (h != h0);
-    fpts.push_back(c);
-  }
+    return c;
+  };
+  for (const F f : fs) fpts.push_back(corners(f));
   const auto vi = get(genmesh::vertex_index, g);
   std::vector<std::size_t> old_index;
   for (const V v : vs) old_index.push_back(get(vi, v));
@@ -439,15 +440,7 @@ TYPED_TEST(Remeshing, RenumberPutsElementsInTheGivenOrder) {
   EXPECT_EQ(k, es.size());
   k = 0;
   for (const F f : faces(g)) {
-    std::set<std::array<double, 3>> c;
-    const auto h0 = halfedge(f, g);
-    auto h = h0;
-    do {
-      const Eigen::Vector3d p = pt(target(h, g));
-      c.insert({p.x(), p.y(), p.z()});
-      h = next(h, g);
-    } while (h != h0);
-    EXPECT_TRUE(c == fpts[k]) << "face " << k;
+    EXPECT_TRUE(corners(f) == fpts[k]) << "face " << k;
     ++k;
   }
   EXPECT_EQ(k, fs.size());
