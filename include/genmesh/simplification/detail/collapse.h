@@ -25,6 +25,7 @@
 
 #include <genmesh/concepts.h>
 #include <genmesh/detail/geometry/morton.h>
+#include <genmesh/detail/geometry/predicates.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/features.h>
 #include <genmesh/geometry.h>
@@ -695,9 +696,112 @@ class Collapser {
     if (rebuild) build_grid();
   }
 
+  // Does the collapse of edge(h) into target(h) at x keep a flat star flat
+  // and unfolded, so that it cannot make an intersection? Exact; true when
+  // every corner of the faces around p and q, and x, lie in one plane; every
+  // old face (around p and q) and every new face (the fan around x) has the
+  // same non-zero orientation in it; and, where p or q is on the border, the
+  // border path through them (a → p → b, or a → p → q → b) and the new one
+  // (a → x → b) are the same curve. Why that suffices, if
+  // the mesh meets itself nowhere before the collapse (what the guard
+  // keeps): the old faces and the new ones are 2-chains in the plane whose
+  // boundaries are the same closed curve C (the link path, and the border
+  // path from b to a), so at any point off their edges each covers it (all faces
+  // positive) as often as C winds around it. The old faces do not overlap:
+  // C is simple and winds once around its inside R, so the new faces cover
+  // R once — they meet each other only along shared edges (their rays from
+  // x are in strictly increasing angular order), and their interiors and
+  // their edges at x miss the link. Another face u met the old faces only
+  // in link vertices and link edges it holds (not on the border path but at
+  // a, b); it meets R, the new faces' union as it was the old ones', in
+  // those alone, and a new face holds a link vertex only as a corner and
+  // meets the link only in its own link edge: u meets each new face at most
+  // in what they share. (On an input that already meets itself this may
+  // accept a collapse that the search below would refuse.) Flat regions are
+  // where that search is dearest: its plane filter cannot decide, and the
+  // faces' boxes overlap most.
+  bool stays_in_flat_star(H h, const Eigen::Vector3d& x) const {
+    const H hf = border(h) ? opposite(h, g_) : h; // a face of the edge
+    const Eigen::Vector3d& a = pos_[vi(source(hf, g_))];
+    const Eigen::Vector3d& b = pos_[vi(target(hf, g_))];
+    const Eigen::Vector3d& c = pos_[vi(target(next(hf, g_), g_))];
+    // x first: off the plane of the face (a, b, c) wherever the surface is
+    // curved (the floating filter decides it at once).
+    if (detail::pred::orient3d(a, b, c, x) != 0) return false;
+    const Eigen::Vector3d n = (b - a).cross(c - a).cwiseAbs();
+    const int axis = n.x() >= n.y() && n.x() >= n.z() ? 0 : n.y() >= n.z() ? 1 : 2;
+    auto orient = [axis](const Eigen::Vector3d& u, const Eigen::Vector3d& v, const Eigen::Vector3d& w) {
+      const auto pu = project2(u, axis), pv = project2(v, axis), pw = project2(w, axis);
+      return detail::pred::orient2d(pu[0], pu[1], pv[0], pv[1], pw[0], pw[1]);
+    };
+    const int sign = orient(a, b, c);
+    if (sign == 0) return false;
+    const std::size_t ip = vi(source(h, g_)), iq = vi(target(h, g_));
+    std::size_t ends[2] = {0, 0}; // the border path's ends a, b
+    int n_ends = 0;
+    bool on_border[2] = {false, false};
+    for (int k = 0; k < 2; ++k) {
+      const V v = k == 0 ? source(h, g_) : target(h, g_);
+      const H start = halfedge(v, g_);
+      H y = start;
+      do {
+        // y: s → v, next(y): v → w; the face is (s, v, w).
+        const std::size_t is = vi(source(y, g_));
+        if (detail::pred::orient3d(a, b, c, pos_[is]) != 0) return false;
+        if (border(y) || border(opposite(y, g_))) {
+          on_border[k] = true;
+          if (is != ip && is != iq) {
+            if (n_ends == 2) return false; // p and q on the border, edge pq inside
+            ends[n_ends++] = is;
+          }
+        }
+        if (!border(y)) {
+          const std::size_t iw = vi(target(next(y, g_), g_));
+          if (orient(pos_[is], pos_[vi(v)], pos_[iw]) != sign) return false;
+          if (is != ip && is != iq && iw != ip && iw != iq && orient(pos_[is], x, pos_[iw]) != sign) return false;
+        }
+        y = opposite(next(y, g_), g_);
+      } while (y != start);
+    }
+    if (!on_border[0] && !on_border[1]) return true;
+    if (n_ends != 2) return false;
+    // The border path a → (p, q) → b and the new one a → x → b: the same
+    // curve, each with its straight-through corners dropped.
+    std::array<std::array<double, 2>, 4> before, after;
+    int nb = 0, na = 0;
+    before[nb++] = project2(pos_[ends[0]], axis);
+    if (on_border[0]) before[nb++] = project2(pos_[ip], axis);
+    if (on_border[1]) before[nb++] = project2(pos_[iq], axis);
+    before[nb++] = project2(pos_[ends[1]], axis);
+    after[na++] = before[0];
+    after[na++] = project2(x, axis);
+    after[na++] = before[nb - 1];
+    straighten(before, nb);
+    straighten(after, na);
+    return na == nb && std::equal(before.begin(), before.begin() + nb, after.begin());
+  }
+
+  // Drops from the polyline q[0, n) every inner corner that lies strictly
+  // between its neighbours on their line (exact): the same curve.
+  static void straighten(std::array<std::array<double, 2>, 4>& q, int& n) {
+    for (int i = 1; i + 1 < n;) {
+      const auto &u = q[i - 1], &v = q[i], &w = q[i + 1];
+      const int k = u[0] != w[0] ? 0 : 1;
+      if (u[k] != w[k] && detail::pred::orient2d(u[0], u[1], v[0], v[1], w[0], w[1]) == 0 &&
+          std::min(u[k], w[k]) < v[k] && v[k] < std::max(u[k], w[k])) {
+        std::copy(q.begin() + i + 1, q.begin() + n, q.begin() + i);
+        --n;
+        i = 1;
+      } else {
+        ++i;
+      }
+    }
+  }
+
   // Would the faces the collapse of edge(h) into target(h) at x makes meet
   // any other face, or each other, beyond what they share? (Exact.)
   bool stays_embedded(H h, const Eigen::Vector3d& x) {
+    if (stays_in_flat_star(h, x)) return true;
     const std::uint32_t ip = static_cast<std::uint32_t>(vi(source(h, g_))),
                         iq = static_cast<std::uint32_t>(vi(target(h, g_)));
     // The faces around p and q but the two of the edge: the new ones, their
