@@ -332,9 +332,14 @@ struct Track_moves : genmesh::Mutation_visitor {
 TYPED_TEST(Remeshing, VisitorSeesEveryVertexMove) {
   auto g = mesh_of<TypeParam>(genmesh::make_icosphere(2));
   Track_moves t;
-  const auto r = genmesh::isotropic_remeshing(g, {.relative_edge_length = 0.8, .iterations = 2}, t);
+  const auto r = genmesh::isotropic_remeshing(g, {.relative_edge_length = 0.8, .iterations = 2, .renumber = true}, t);
   EXPECT_GE(t.moves, r.vertices); // every free vertex moves at least once per round
   EXPECT_GE(t.renumberings, 1u); // the first round renumbers; `last` followed the new indices
+  // Off (the default): no renumbering.
+  Track_moves off;
+  auto h = mesh_of<TypeParam>(genmesh::make_icosphere(2));
+  genmesh::isotropic_remeshing(h, {.relative_edge_length = 0.8, .iterations = 2}, off);
+  EXPECT_EQ(off.renumberings, 0u);
   std::size_t checked = 0;
   for (const auto v : vertices(g)) {
     const auto it = t.last.find(Track_moves::id(v, g));

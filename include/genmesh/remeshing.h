@@ -37,12 +37,13 @@
 //   on Halfedge_mesh, CGAL::Surface_mesh and Incidence_mesh (its native
 //   operations; never a copy). See detail/remesher.h for how, and for the
 //   bound on every loop.
-// - Renumbering: after each round's collapses, g is renumbered in a spatial
-//   order (genmesh::renumber, <genmesh/renumbering.h>) for memory locality;
-//   surviving elements change indices (the visitor's on_renumbered(maps, g)
-//   gives old -> new). Halfedge_mesh and Incidence_mesh drop their garbage
-//   then and carry every property; other meshes keep removed slots and carry
-//   only connectivity and points (see renumbering.h).
+// - Renumbering (options.renumber, off by default): after a step that
+//   changed much, g is renumbered in a spatial order (genmesh::renumber,
+//   <genmesh/renumbering.h>) for memory locality; surviving elements change
+//   indices (the visitor's on_renumbered(maps, g) gives old -> new).
+//   Halfedge_mesh and Incidence_mesh drop their garbage then and carry every
+//   property; other meshes keep removed slots and carry only connectivity
+//   and points (see renumbering.h), which is why it is not the default.
 // Limits: triangles only after the optional triangulation; adaptive sizing
 // is pmp-library's rule (curvature of the input, options.h).
 #pragma once
@@ -76,8 +77,8 @@ Remeshing_result isotropic_remeshing(G& g, const Remeshing_options& options = {}
   if (options.projection) r.build_reference();
   for (int i = 0; i < options.iterations; ++i) {
     // Splits append their elements in a spatially random order (a length
-    // heap) and collapses leave holes: where they changed much (the first
-    // round), the mesh is renumbered in a spatial order, so that the steps
+    // heap) and collapses leave holes: with options.renumber, where they
+    // changed much (the first round), the mesh is renumbered in a spatial order, so that the steps
     // after read neighbours near each other in memory (armadillo: flips,
     // smoothing and projection 20-50 % less time, docs/benchmarks.md session 7).
     r.split_long_edges();

@@ -745,14 +745,14 @@ public:
     return order;
   }
 
-  /// renumber() when the splits and collapses since the last renumbering
+  /// With options.renumber: renumber() when the splits and collapses since the last renumbering
   /// (or the start) changed more than a tenth of the vertices: on armadillo
   /// and bunny, after the first round's splits and after its collapses
   /// (they add ~45 % new vertices and remove ~40 %; the later rounds under
   /// 3 %, whose renumbering would cost more than it saves). Counts only,
   /// so the same on every backend. Whether it renumbered.
   bool renumber_if_scattered() {
-    if (10 * churn_ <= live_vertices_) return false;
+    if (!o_.renumber || 10 * churn_ <= live_vertices_) return false;
     renumber();
     return true;
   }
