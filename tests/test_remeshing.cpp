@@ -9,6 +9,7 @@
 #include <genmesh/io.h>
 #include <genmesh/measures.h>
 #include <genmesh/remeshing.h>
+#include <genmesh/renumbering.h>
 #include <genmesh/soup_to_mesh.h>
 #include <genmesh/validity.h>
 
@@ -25,6 +26,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <span>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -315,13 +317,33 @@ struct Track_moves : genmesh::Mutation_visitor {
   }
   void on_split_edge(const auto& h, const auto& g) { last.erase(id(target(h, g), g)); }
   void before_collapse(const auto& h, const auto& g) { last.erase(id(source(h, g), g)); }
+  std::size_t renumberings = 0;
+  void on_renumbered(const auto& maps, const auto&) {
+    ++renumberings;
+    std::map<std::size_t, Eigen::Vector3d> moved;
+    for (const auto& [i, p] : last) {
+      if (i >= maps.vertices.size() || maps.vertices[i] == genmesh::Renumbering_maps::null) continue;
+      moved[maps.vertices[i]] = p;
+    }
+    last.swap(moved);
+  }
 };
 
 TYPED_TEST(Remeshing, VisitorSeesEveryVertexMove) {
   auto g = mesh_of<TypeParam>(genmesh::make_icosphere(2));
   Track_moves t;
-  const auto r = genmesh::isotropic_remeshing(g, {.relative_edge_length = 0.8, .iterations = 2}, t);
+  const auto r = genmesh::isotropic_remeshing(g, {.relative_edge_length = 0.8, .iterations = 2, .renumber = true}, t);
   EXPECT_GE(t.moves, r.vertices); // every free vertex moves at least once per round
+  EXPECT_GE(t.renumberings, 1u); // the first round renumbers; `last` followed the new indices
+  // Renumbered, the same mesh on every backend.
+  auto ref = mesh_of<genmesh_test::Halfedge_mesh>(genmesh::make_icosphere(2));
+  genmesh::isotropic_remeshing(ref, {.relative_edge_length = 0.8, .iterations = 2, .renumber = true});
+  EXPECT_TRUE(genmesh::canonical(genmesh::to_soup(g)) == genmesh::canonical(genmesh::to_soup(ref)));
+  // Off (the default): no renumbering.
+  Track_moves off;
+  auto h = mesh_of<TypeParam>(genmesh::make_icosphere(2));
+  genmesh::isotropic_remeshing(h, {.relative_edge_length = 0.8, .iterations = 2}, off);
+  EXPECT_EQ(off.renumberings, 0u);
   std::size_t checked = 0;
   for (const auto v : vertices(g)) {
     const auto it = t.last.find(Track_moves::id(v, g));
@@ -330,6 +352,119 @@ TYPED_TEST(Remeshing, VisitorSeesEveryVertexMove) {
     ++checked;
   }
   EXPECT_GT(checked, r.vertices / 2);
+}
+
+/// The canonical soup of s with its points sorted too (independent of the
+/// vertex order).
+Polygon_soup point_sorted(const Polygon_soup& s) {
+  std::vector<std::uint32_t> order(s.num_points()), rank(s.num_points());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  auto key = [&](std::uint32_t i) { return std::array<double, 3>{s.points[i].x(), s.points[i].y(), s.points[i].z()}; };
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return key(a) < key(b); });
+  Polygon_soup out;
+  for (std::uint32_t k = 0; k < order.size(); ++k) rank[order[k]] = k, out.add_point(s.points[order[k]]);
+  for (std::size_t f = 0; f < s.num_faces(); ++f) {
+    std::vector<Polygon_soup::Index> c;
+    for (const auto i : s.face(f)) c.push_back(rank[i]);
+    out.add_face(c);
+  }
+  return genmesh::canonical(out);
+}
+
+// genmesh::renumber (<genmesh/renumbering.h>), which the remesher runs
+// between rounds: on a mesh with garbage (some collapses), every element
+// reversed; iteration then follows the orders given, each element keeps its
+// point, ends and corners, the surface stays the same; a bad order is
+// refused before any change.
+TYPED_TEST(Remeshing, RenumberPutsElementsInTheGivenOrder) {
+  using G = TypeParam;
+  using V = genmesh::vertex_descriptor_t<G>;
+  using E = genmesh::edge_descriptor_t<G>;
+  using F = genmesh::face_descriptor_t<G>;
+  auto g = mesh_of<G>(genmesh::make_icosphere(2));
+  int collapsed = 0;
+  for (int round = 0; round < 6; ++round)
+    for (const auto e : edges(g))
+      if (genmesh::can_collapse_edge(e, g)) {
+        ASSERT_TRUE(genmesh::collapse_edge(e, g));
+        ++collapsed;
+        break;
+      }
+  ASSERT_EQ(collapsed, 6);
+  const auto before = point_sorted(genmesh::to_soup(g));
+  std::vector<V> vs(vertices(g).begin(), vertices(g).end());
+  std::vector<E> es(edges(g).begin(), edges(g).end());
+  std::vector<F> fs(faces(g).begin(), faces(g).end());
+  std::reverse(vs.begin(), vs.end());
+  std::reverse(es.begin(), es.end());
+  std::rotate(fs.begin(), fs.begin() + 7, fs.end());
+  auto pt = [&](V v) { return genmesh::point(v, g); };
+  std::vector<Eigen::Vector3d> vpts, epts;
+  std::vector<std::set<std::array<double, 3>>> fpts;
+  for (const V v : vs) vpts.push_back(pt(v));
+  for (const E e : es) {
+    const auto h = halfedge(e, g);
+    epts.push_back(pt(source(h, g))), epts.push_back(pt(target(h, g)));
+  }
+  auto corners = [&](F f) { // the face's corner points, as a set
+    std::set<std::array<double, 3>> c;
+    const auto h0 = halfedge(f, g);
+    auto h = h0;
+    do {
+      const Eigen::Vector3d p = pt(target(h, g));
+      c.insert({p.x(), p.y(), p.z()});
+      h = next(h, g);
+    } while (h != h0);
+    return c;
+  };
+  for (const F f : fs) fpts.push_back(corners(f));
+  const auto vi = get(genmesh::vertex_index, g);
+  std::vector<std::size_t> old_index;
+  for (const V v : vs) old_index.push_back(get(vi, v));
+
+  const genmesh::Renumbering_maps maps = genmesh::renumber(g, std::span<const V>(vs), std::span<const E>(es),
+                                                           std::span<const F>(fs));
+  EXPECT_TRUE(genmesh::check_mesh(g).ok());
+  EXPECT_TRUE(point_sorted(genmesh::to_soup(g)) == before);
+  std::size_t k = 0;
+  std::size_t last = 0;
+  for (const V v : vertices(g)) {
+    ASSERT_LT(k, vpts.size());
+    EXPECT_EQ(pt(v), vpts[k]);
+    EXPECT_EQ(maps.vertices[old_index[k]], get(vi, v));
+    if (k > 0) {
+      EXPECT_GT(get(vi, v), last);
+    }
+    last = get(vi, v);
+    ++k;
+  }
+  EXPECT_EQ(k, vpts.size());
+  k = 0;
+  for (const E e : edges(g)) {
+    const auto h = halfedge(e, g); // halfedge(e) keeps its orientation
+    EXPECT_EQ(pt(source(h, g)), epts[2 * k]);
+    EXPECT_EQ(pt(target(h, g)), epts[2 * k + 1]);
+    ++k;
+  }
+  EXPECT_EQ(k, es.size());
+  k = 0;
+  for (const F f : faces(g)) {
+    EXPECT_TRUE(corners(f) == fpts[k]) << "face " << k;
+    ++k;
+  }
+  EXPECT_EQ(k, fs.size());
+  // Refused, unchanged: a vertex missing, or listed twice.
+  std::vector<V> short_order(vertices(g).begin(), vertices(g).end());
+  const auto soup = genmesh::to_soup(g);
+  std::vector<E> es2(edges(g).begin(), edges(g).end());
+  std::vector<F> fs2(faces(g).begin(), faces(g).end());
+  short_order.back() = short_order.front();
+  EXPECT_THROW(genmesh::renumber(g, std::span<const V>(short_order), std::span<const E>(es2), std::span<const F>(fs2)),
+               genmesh::invalid_input);
+  short_order.pop_back();
+  EXPECT_THROW(genmesh::renumber(g, std::span<const V>(short_order), std::span<const E>(es2), std::span<const F>(fs2)),
+               genmesh::invalid_input);
+  EXPECT_TRUE(genmesh::to_soup(g) == soup);
 }
 
 TYPED_TEST(Remeshing, StepsAloneKeepTheirPromises) {

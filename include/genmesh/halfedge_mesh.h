@@ -71,6 +71,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -415,6 +416,73 @@ public:
     maps.faces.reserve(nf);
     for (auto i : fmap) maps.faces.emplace_back(i);
     return maps;
+  }
+
+  /// Renumbers the live elements in any order: vertex i becomes vmap[i],
+  /// edge i emap[i], face i fmap[i] (removed elements: the null index).
+  /// Each map must send the live elements one to one onto [0, live count)
+  /// (checked: throws invalid_input, the mesh unchanged). Halfedges follow
+  /// their edge with their orientation (2i -> 2 emap[i], 2i + 1 -> 2 emap[i] + 1);
+  /// connectivity and every property follow; the garbage is gone afterwards.
+  /// genmesh::renumber (<genmesh/renumbering.h>) calls it.
+  void renumber(std::span<const std::uint32_t> vmap, std::span<const std::uint32_t> emap,
+                std::span<const std::uint32_t> fmap) {
+    const std::uint32_t kv = static_cast<std::uint32_t>(n_vertices()), ke = static_cast<std::uint32_t>(n_edges()),
+                        kf = static_cast<std::uint32_t>(n_faces());
+    // In place, along the permutations' cycles (no second copy of the
+    // mesh): the removed elements' slots move behind the live ones and are
+    // cut off; capacities stay, so a mesh that grows again (remeshing's
+    // splits) does not reallocate at once.
+    const std::size_t nv = vmap.size(), ne = emap.size(), nf = fmap.size();
+    const std::vector<std::uint32_t> vp = detail::full_permutation(vmap, vertices_size(), &vremoved_),
+                                     ep = detail::full_permutation(emap, edges_size(), &eremoved_),
+                                     fp = detail::full_permutation(fmap, faces_size(), &fremoved_);
+    if (nv != vertices_size() || ne != edges_size() || nf != faces_size() || vp.size() != nv || ep.size() != ne ||
+        fp.size() != nf)
+      throw invalid_input("Halfedge_mesh::renumber: a map is not one to one from the live elements onto [0, live count)");
+    auto map_h = [&](Halfedge_index h) {
+      return h.is_valid() && h.idx() < 2 * ne ? Halfedge_index(2 * ep[h.idx() >> 1] | (h.idx() & 1u)) : Halfedge_index();
+    };
+    auto map_v = [&](Vertex_index v) { return v.is_valid() && v.idx() < nv ? Vertex_index(vp[v.idx()]) : Vertex_index(); };
+    auto map_f = [&](Face_index f) { return f.is_valid() && f.idx() < nf ? Face_index(fp[f.idx()]) : Face_index(); };
+    for (auto& h : vhalfedge_) h = map_h(h);
+    for (auto& h : fhalfedge_) h = map_h(h);
+    for (std::size_t i = 0; i < 2 * ne; ++i) {
+      hlinks_.next(i) = map_h(hlinks_.next(i));
+      hlinks_.prev(i) = map_h(hlinks_.prev(i));
+      hlinks_.target(i) = map_v(hlinks_.target(i));
+      hlinks_.face(i) = map_f(hlinks_.face(i));
+    }
+    detail::permute_in_place(vp, [&](std::size_t i, std::size_t j) { std::swap(vhalfedge_[i], vhalfedge_[j]); });
+    detail::permute_in_place(fp, [&](std::size_t i, std::size_t j) { std::swap(fhalfedge_[i], fhalfedge_[j]); });
+    detail::permute_in_place(ep, [&](std::size_t i, std::size_t j) {
+      for (std::size_t s = 0; s < 2; ++s) {
+        const std::size_t a = 2 * i + s, b = 2 * j + s;
+        std::swap(hlinks_.next(a), hlinks_.next(b));
+        std::swap(hlinks_.prev(a), hlinks_.prev(b));
+        std::swap(hlinks_.target(a), hlinks_.target(b));
+        std::swap(hlinks_.face(a), hlinks_.face(b));
+      }
+    });
+    std::vector<std::uint32_t> hp;
+    if (hprops_.n_properties() != 0) {
+      hp.resize(2 * ne);
+      for (std::size_t e = 0; e < ne; ++e) hp[2 * e] = 2 * ep[e], hp[2 * e + 1] = 2 * ep[e] + 1;
+    }
+    vhalfedge_.resize(kv);
+    fhalfedge_.resize(kf);
+    hlinks_.resize(2 * std::size_t(ke));
+    vremoved_.assign(kv, false);
+    eremoved_.assign(ke, false);
+    fremoved_.assign(kf, false);
+    vprops_.permute(vp, kv);
+    if (hp.empty()) hprops_.resize(2 * std::size_t(ke));
+    else hprops_.permute(hp, 2 * std::size_t(ke));
+    eprops_.permute(ep, ke);
+    fprops_.permute(fp, kf);
+    removed_vertices_ = removed_edges_ = removed_faces_ = 0;
+    vertices_freelist_ = edges_freelist_ = faces_freelist_ = invalid;
+    garbage_ = false;
   }
 
   /// Capacity for nv vertices, ne edges (2 ne halfedges) and nf faces, in

@@ -1102,6 +1102,16 @@ public:
   /// garbage). Defined in <genmesh/detail/incidence/garbage.h>.
   Garbage_collection_maps collect_garbage(Garbage_order order = Garbage_order::stable);
 
+  /// Renumbers the live elements in any order: vertex i becomes vmap[i],
+  /// edge i emap[i], face i fmap[i] (removed elements: the null index); each
+  /// map must send the live elements one to one onto [0, live count)
+  /// (checked: invalid_input, the mesh unchanged). Edges keep their
+  /// direction; every property follows; the garbage is dropped; the matrices
+  /// are rebuilt as collect_garbage() rebuilds them. genmesh::renumber
+  /// (<genmesh/renumbering.h>) calls it. In <genmesh/detail/incidence/garbage.h>.
+  void renumber(std::span<const std::uint32_t> vmap, std::span<const std::uint32_t> emap,
+                std::span<const std::uint32_t> fmap);
+
   /// Capacity for nv vertices, ne edges and nf faces.
   void reserve(size_type nv, size_type ne, size_type nf) {
     points_.reserve(nv);
@@ -1533,6 +1543,12 @@ private:
     }
     return comps;
   }
+
+  // collect_garbage and renumber: rebuild the matrices with the survivors
+  // at their new indices; `any_order`: the maps may reorder (properties
+  // permuted, not compacted in place).
+  void reassemble_(std::span<const std::uint32_t> vmap, std::span<const std::uint32_t> emap,
+                   std::span<const std::uint32_t> fmap, bool any_order);
 
   void update_manifold_flags_() {
     const Incidence_manifold_report r = manifold_report();

@@ -80,6 +80,12 @@ struct Mutation_visitor {
   /// (remeshing's tangential smoothing and projection): v's point is new.
   /// Called once per vertex and move step, after the point is written.
   void on_vertex_moved(const auto& /*v*/, const auto& /*g*/) {}
+  /// After an algorithm renumbered g (genmesh::renumber, <genmesh/renumbering.h>;
+  /// remeshing does between rounds): maps.vertices[i], maps.edges[i],
+  /// maps.faces[i] are the new indices of the elements that had index i
+  /// (Renumbering_maps::null for removed ones). Descriptors held from before
+  /// are stale; data kept by index follows these maps.
+  void on_renumbered(const auto& /*maps*/, const auto& /*g*/) {}
   /// After split_face(h1, h2): h is the new halfedge (next(h1) == h); face(h)
   /// is the old face, face(opposite(h)) the new one.
   void on_split_face(const auto& /*h*/, const auto& /*g*/) {}

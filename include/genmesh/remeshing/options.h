@@ -82,6 +82,19 @@ struct Remeshing_options {
   std::optional<Adaptive_sizing> adaptive = std::nullopt;
   /// Faces that are not triangles.
   Polygons polygons = Polygons::triangulate;
+  /// Renumber g in a spatial order after a step that changed much (the
+  /// first round's splits and collapses), so that the steps after read
+  /// neighbours near each other in memory (armadillo: 3–25 % less time in
+  /// same-run pairs, docs/benchmarks.md "Isotropic remeshing, session 7").
+  /// Surviving elements then change indices during the call (the visitor's
+  /// on_renumbered(maps, g) gives old -> new). Halfedge_mesh and
+  /// Incidence_mesh carry every property along and drop their garbage;
+  /// other meshes (CGAL::Surface_mesh, Polyhedron_3, OpenMesh) carry only
+  /// connectivity and points, so their other per-element properties would
+  /// stay with the slot: hence off by default. The same option gives the
+  /// same mesh on every backend; on and off give different meshes (ties
+  /// follow the numbering).
+  bool renumber = false;
 };
 
 /// What isotropic_remeshing() did.

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace genmesh::detail {
@@ -49,6 +50,56 @@ inline std::vector<std::uint32_t> halfedge_compaction_map(const std::vector<std:
     hmap[2 * e + 1] = emap[e] == null ? null : 2 * emap[e] + 1;
   }
   return hmap;
+}
+
+/// A renumbering map completed into a permutation of [0, n): entries i with
+/// map[i] null (dropped elements) take the indices no entry maps to, in
+/// increasing order of both. Empty if the map is not one to one into [0, n)
+/// (an entry out of range or repeated), or, given `removed` (its size
+/// map.size()), if map[i] is null exactly when removed[i] does not hold, or
+/// a live element maps beyond the live count.
+inline std::vector<std::uint32_t> full_permutation(std::span<const std::uint32_t> map, std::size_t n,
+                                                   const std::vector<bool>* removed = nullptr) {
+  constexpr std::uint32_t null = Vertex_index::invalid_value;
+  if (map.size() > n) return {};
+  std::vector<std::uint32_t> perm(n, null);
+  std::vector<std::uint8_t> used(n, 0);
+  std::size_t live = 0;
+  for (std::size_t i = 0; i < map.size(); ++i) {
+    const std::uint32_t j = map[i];
+    if (j == null) continue;
+    if (j >= n || used[j]) return {};
+    used[j] = 1;
+    perm[i] = j;
+    ++live;
+  }
+  if (removed) {
+    if (removed->size() != map.size()) return {};
+    for (std::size_t i = 0; i < map.size(); ++i)
+      if ((map[i] == null) != static_cast<bool>((*removed)[i]) || (map[i] != null && map[i] >= live)) return {};
+  }
+  std::size_t free = 0;
+  for (auto& j : perm) {
+    if (j != null) continue;
+    while (used[free]) ++free;
+    j = static_cast<std::uint32_t>(free++);
+  }
+  return perm;
+}
+
+/// Moves element i to perm[i] for every i, in place, along the cycles of the
+/// permutation perm of [0, n): swap(i, j) exchanges elements i and j.
+template <class Swap>
+void permute_in_place(std::span<const std::uint32_t> perm, Swap&& swap) {
+  std::vector<std::uint8_t> done(perm.size(), 0);
+  for (std::size_t i = 0; i < perm.size(); ++i) {
+    if (done[i]) continue;
+    done[i] = 1;
+    for (std::size_t j = perm[i]; j != i; j = perm[j]) {
+      swap(i, j);
+      done[j] = 1;
+    }
+  }
 }
 
 } // namespace genmesh::detail

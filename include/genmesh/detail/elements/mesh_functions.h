@@ -30,6 +30,8 @@
 #include <boost/graph/properties.hpp>
 
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <type_traits>
 #include <utility>
 
@@ -376,6 +378,14 @@ template <template <class> class M, class P>
   requires detail::is_genmesh_mesh<M>
 void reserve(M<P>& m, std::size_t nv, std::size_t ne, std::size_t nf) {
   m.reserve(nv, ne, nf);
+}
+/// genmesh::renumber's native path (<genmesh/renumbering.h>): maps old ->
+/// new index, the live elements onto [0, live count).
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+void genmesh_native_renumber(M<P>& m, std::span<const std::uint32_t> vmap, std::span<const std::uint32_t> emap,
+                             std::span<const std::uint32_t> fmap) {
+  m.renumber(vmap, emap, fmap);
 }
 template <template <class> class M, class P>
   requires detail::is_genmesh_mesh<M>

@@ -1,7 +1,9 @@
 // genmesh/detail/geometry/morton.h — the bit spreading behind 3D Morton codes (private).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 
 namespace genmesh::detail {
 
@@ -15,6 +17,22 @@ inline std::uint64_t morton_spread(std::uint64_t x) {
   x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
   x = (x | x << 2) & 0x1249249249249249ULL;
   return x;
+}
+
+// Sorts v by the `bits` low bits of key(element) >> shift, stably (LSD radix
+// sort, 11 bits a pass; tmp is scratch of v's size): Morton orders without a
+// comparison sort.
+template <class Vector, class Key>
+void radix_sort(Vector& v, Vector& tmp, int shift, int bits, Key key) {
+  tmp.resize(v.size());
+  for (int s = shift; s < shift + bits; s += 11) {
+    std::size_t hist[2048] = {};
+    for (const auto& x : v) ++hist[(key(x) >> s) & 2047];
+    std::size_t sum = 0;
+    for (auto& h : hist) sum += std::exchange(h, sum);
+    for (const auto& x : v) tmp[hist[(key(x) >> s) & 2047]++] = x;
+    v.swap(tmp);
+  }
 }
 
 } // namespace genmesh::detail

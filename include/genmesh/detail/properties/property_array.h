@@ -12,8 +12,11 @@
 // property map like every other type.
 #pragma once
 
+#include <genmesh/detail/elements/compaction.h>
+
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -63,6 +66,9 @@ public:
   /// Element i moves to old_to_new[i] if that is not `dropped`; then the array
   /// shrinks to new_size. Each destination must be i itself or a dropped slot.
   virtual void compact(std::span<const std::uint32_t> old_to_new, std::size_t new_size) = 0;
+  /// Element i moves to perm[i], perm a permutation of [0, size()) (see
+  /// detail::full_permutation); then the array shrinks to new_size. In place.
+  virtual void permute(std::span<const std::uint32_t> perm, std::size_t new_size) = 0;
   virtual void shrink_to_fit() = 0;
   [[nodiscard]] virtual std::unique_ptr<Base_property_array> clone() const = 0;
   [[nodiscard]] virtual std::size_t memory_bytes() const = 0;
@@ -94,6 +100,10 @@ public:
       const std::uint32_t j = old_to_new[i];
       if (j != dropped && j != i) data_[j] = std::move(data_[i]);
     }
+    data_.resize(new_size, Storage(default_));
+  }
+  void permute(std::span<const std::uint32_t> perm, std::size_t new_size) override {
+    detail::permute_in_place(perm, [&](std::size_t i, std::size_t j) { std::swap(data_[i], data_[j]); });
     data_.resize(new_size, Storage(default_));
   }
   void shrink_to_fit() override { data_.shrink_to_fit(); }
@@ -230,6 +240,10 @@ public:
   }
   void compact(std::span<const std::uint32_t> old_to_new, std::size_t new_size) {
     for (auto& a : arrays_) a->compact(old_to_new, new_size);
+    size_ = new_size;
+  }
+  void permute(std::span<const std::uint32_t> perm, std::size_t new_size) {
+    for (auto& a : arrays_) a->permute(perm, new_size);
     size_ = new_size;
   }
   void shrink_to_fit() {

@@ -27,6 +27,7 @@
 
 #include <genmesh/concepts.h>
 #include <genmesh/detail/geometry/morton.h>
+#include <genmesh/detail/geometry/predicates.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/features.h>
 #include <genmesh/geometry.h>
@@ -338,9 +339,7 @@ class Collapser {
       // Slots by face index first (build_grid lays them out in Morton order).
       const std::size_t fb = index_bound(face_index, g_);
       slot_.assign(fb, Face_slot{});
-      slot_face_.resize(fb);
       slot_of_.assign(fb, no_slot);
-      for (std::size_t f = 0; f < fb; ++f) slot_face_[f] = static_cast<std::uint32_t>(f);
       if (const Eigen::AlignedBox3d box = points_box(); !box.isEmpty())
         quantize_ = Quantizer::over(box.min(), box.max());
       for (const F f : faces(g_)) {
@@ -724,20 +723,21 @@ class Collapser {
   // in memory: a query reads a few runs of slots instead of scattered ones.
   // Read from the slots alone (their corners are current), not the mesh;
   // the slots are compacted and permuted in place (a copy of them was the
-  // largest transient of the run).
+  // largest transient of the run). Which face a slot holds is known only
+  // here, from slot_of_ over the live faces (kept, it cost 4 bytes a face
+  // for the whole run).
   void build_grid() {
     grid_.reset(1.0, 0); // frees the old cells first
+    std::vector<std::uint32_t> face_of(slot_.size(), no_slot); // by slot
+    for (const F f : faces(g_)) face_of[slot_of_[fi(f)]] = static_cast<std::uint32_t>(fi(f));
     std::size_t live = 0;
     for (std::size_t s = 0; s < slot_.size(); ++s) {
-      if (!slot_[s].alive()) {
-        slot_of_[slot_face_[s]] = no_slot;
-        continue;
-      }
+      if (!slot_[s].alive()) continue;
       slot_[live] = slot_[s];
-      slot_face_[live++] = slot_face_[s];
+      face_of[live++] = face_of[s];
     }
     slot_.resize(live);
-    slot_face_.resize(live);
+    face_of.resize(live);
     double sum = 0;
     std::size_t n = 0;
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
@@ -759,31 +759,37 @@ class Collapser {
       const Eigen::Vector3d c = ((t.p[0] + t.p[1] + t.p[2]) / 3.0 - lo) / cell;
       order.push_back(morton(c) << 32 | s);
     }
-    std::sort(order.begin(), order.end());
+    {
+      // By the code alone, stably: ties stay in slot order, as a sort of the
+      // whole key would leave them (a tenth of std::sort's instructions).
+      std::vector<std::uint64_t> tmp;
+      genmesh::detail::radix_sort(order, tmp, 32, 30, [](std::uint64_t k) { return k; });
+    }
     constexpr std::uint64_t low = 0xffffffffu;
     // Slot s takes the slot order[s] had: follow each cycle of the
     // permutation, marking placed slots by order[s]'s low half = s.
     for (std::size_t s = 0; s < order.size(); ++s) {
       if ((order[s] & low) == s) continue;
       const Face_slot first = slot_[s];
-      const std::uint32_t first_face = slot_face_[s];
+      const std::uint32_t first_face = face_of[s];
       std::size_t j = s;
       for (;;) {
         const std::size_t k = order[j] & low;
         order[j] = (order[j] & ~low) | j;
         if (k == s) {
           slot_[j] = first;
-          slot_face_[j] = first_face;
+          face_of[j] = first_face;
           break;
         }
         slot_[j] = slot_[k];
-        slot_face_[j] = slot_face_[k];
+        face_of[j] = face_of[k];
         j = k;
       }
     }
     std::vector<std::uint64_t>().swap(order);
+    for (std::size_t s = 0; s < slot_.size(); ++s) slot_of_[face_of[s]] = static_cast<std::uint32_t>(s);
+    std::vector<std::uint32_t>().swap(face_of);
     for (std::size_t s = 0; s < slot_.size(); ++s) {
-      slot_of_[slot_face_[s]] = static_cast<std::uint32_t>(s);
       const auto t = slot_triangle(s);
       grid_.insert(static_cast<std::uint32_t>(s), Box::of(t.p[0], t.p[1], t.p[2]));
     }
@@ -823,9 +829,112 @@ class Collapser {
     if (rebuild) build_grid();
   }
 
+  // Does the collapse of edge(h) into target(h) at x keep a flat star flat
+  // and unfolded, so that it cannot make an intersection? Exact; true when
+  // every corner of the faces around p and q, and x, lie in one plane; every
+  // old face (around p and q) and every new face (the fan around x) has the
+  // same non-zero orientation in it; and, where p or q is on the border, the
+  // border path through them (a → p → b, or a → p → q → b) and the new one
+  // (a → x → b) are the same curve. Why that suffices, if
+  // the mesh meets itself nowhere before the collapse (what the guard
+  // keeps): the old faces and the new ones are 2-chains in the plane whose
+  // boundaries are the same closed curve C (the link path, and the border
+  // path from b to a), so at any point off their edges each covers it (all faces
+  // positive) as often as C winds around it. The old faces do not overlap:
+  // C is simple and winds once around its inside R, so the new faces cover
+  // R once — they meet each other only along shared edges (their rays from
+  // x are in strictly increasing angular order), and their interiors and
+  // their edges at x miss the link. Another face u met the old faces only
+  // in link vertices and link edges it holds (not on the border path but at
+  // a, b); it meets R, the new faces' union as it was the old ones', in
+  // those alone, and a new face holds a link vertex only as a corner and
+  // meets the link only in its own link edge: u meets each new face at most
+  // in what they share. (On an input that already meets itself this may
+  // accept a collapse that the search below would refuse.) Flat regions are
+  // where that search is dearest: its plane filter cannot decide, and the
+  // faces' boxes overlap most.
+  bool stays_in_flat_star(H h, const Eigen::Vector3d& x) const {
+    const H hf = border(h) ? opposite(h, g_) : h; // a face of the edge
+    const Eigen::Vector3d& a = pos_[vi(source(hf, g_))];
+    const Eigen::Vector3d& b = pos_[vi(target(hf, g_))];
+    const Eigen::Vector3d& c = pos_[vi(target(next(hf, g_), g_))];
+    // x first: off the plane of the face (a, b, c) wherever the surface is
+    // curved (the floating filter decides it at once).
+    if (detail::pred::orient3d(a, b, c, x) != 0) return false;
+    const Eigen::Vector3d n = (b - a).cross(c - a).cwiseAbs();
+    const int axis = n.x() >= n.y() && n.x() >= n.z() ? 0 : n.y() >= n.z() ? 1 : 2;
+    auto orient = [axis](const Eigen::Vector3d& u, const Eigen::Vector3d& v, const Eigen::Vector3d& w) {
+      const auto pu = project2(u, axis), pv = project2(v, axis), pw = project2(w, axis);
+      return detail::pred::orient2d(pu[0], pu[1], pv[0], pv[1], pw[0], pw[1]);
+    };
+    const int sign = orient(a, b, c);
+    if (sign == 0) return false;
+    const std::size_t ip = vi(source(h, g_)), iq = vi(target(h, g_));
+    std::size_t ends[2] = {0, 0}; // the border path's ends a, b
+    int n_ends = 0;
+    bool on_border[2] = {false, false};
+    for (int k = 0; k < 2; ++k) {
+      const V v = k == 0 ? source(h, g_) : target(h, g_);
+      const H start = halfedge(v, g_);
+      H y = start;
+      do {
+        // y: s → v, next(y): v → w; the face is (s, v, w).
+        const std::size_t is = vi(source(y, g_));
+        if (detail::pred::orient3d(a, b, c, pos_[is]) != 0) return false;
+        if (border(y) || border(opposite(y, g_))) {
+          on_border[k] = true;
+          if (is != ip && is != iq) {
+            if (n_ends == 2) return false; // p and q on the border, edge pq inside
+            ends[n_ends++] = is;
+          }
+        }
+        if (!border(y)) {
+          const std::size_t iw = vi(target(next(y, g_), g_));
+          if (orient(pos_[is], pos_[vi(v)], pos_[iw]) != sign) return false;
+          if (is != ip && is != iq && iw != ip && iw != iq && orient(pos_[is], x, pos_[iw]) != sign) return false;
+        }
+        y = opposite(next(y, g_), g_);
+      } while (y != start);
+    }
+    if (!on_border[0] && !on_border[1]) return true;
+    if (n_ends != 2) return false;
+    // The border path a → (p, q) → b and the new one a → x → b: the same
+    // curve, each with its straight-through corners dropped.
+    std::array<std::array<double, 2>, 4> before, after;
+    int nb = 0, na = 0;
+    before[nb++] = project2(pos_[ends[0]], axis);
+    if (on_border[0]) before[nb++] = project2(pos_[ip], axis);
+    if (on_border[1]) before[nb++] = project2(pos_[iq], axis);
+    before[nb++] = project2(pos_[ends[1]], axis);
+    after[na++] = before[0];
+    after[na++] = project2(x, axis);
+    after[na++] = before[nb - 1];
+    straighten(before, nb);
+    straighten(after, na);
+    return na == nb && std::equal(before.begin(), before.begin() + nb, after.begin());
+  }
+
+  // Drops from the polyline q[0, n) every inner corner that lies strictly
+  // between its neighbours on their line (exact): the same curve.
+  static void straighten(std::array<std::array<double, 2>, 4>& q, int& n) {
+    for (int i = 1; i + 1 < n;) {
+      const auto &u = q[i - 1], &v = q[i], &w = q[i + 1];
+      const int k = u[0] != w[0] ? 0 : 1;
+      if (u[k] != w[k] && detail::pred::orient2d(u[0], u[1], v[0], v[1], w[0], w[1]) == 0 &&
+          std::min(u[k], w[k]) < v[k] && v[k] < std::max(u[k], w[k])) {
+        std::copy(q.begin() + i + 1, q.begin() + n, q.begin() + i);
+        --n;
+        i = 1;
+      } else {
+        ++i;
+      }
+    }
+  }
+
   // Would the faces the collapse of edge(h) into target(h) at x makes meet
   // any other face, or each other, beyond what they share? (Exact.)
   bool stays_embedded(H h, const Eigen::Vector3d& x) {
+    if (stays_in_flat_star(h, x)) return true;
     const std::uint32_t ip = static_cast<std::uint32_t>(vi(source(h, g_))),
                         iq = static_cast<std::uint32_t>(vi(target(h, g_)));
     // The faces around p and q but the two of the edge: the new ones, their
@@ -1322,8 +1431,7 @@ class Collapser {
   Quantizer quantize_; // for the slots' and the new faces' boxes
   std::vector<Face_slot> slot_; // in Morton order (see build_grid)
   static constexpr std::uint32_t no_slot = ~std::uint32_t{0};
-  std::vector<std::uint32_t> slot_of_; // by face index; no_slot once dead
-  std::vector<std::uint32_t> slot_face_; // by slot: its face index
+  std::vector<std::uint32_t> slot_of_; // by face index (live faces)
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
   std::vector<H> around_;           // the survivor's incoming halfedges
   std::vector<Short_box> fresh_box_;

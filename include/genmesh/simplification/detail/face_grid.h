@@ -90,7 +90,12 @@ class Face_grid {
   void insert(std::uint32_t f, const Box& b) {
     const std::uint8_t v = bump(f);
     for_cells(b, [&](std::uint64_t k, const Entry& e) {
-      cell(k).push_back({f, static_cast<std::uint8_t>(v << 3 | e.flags), e.x, e.y, e.z});
+      auto& list = cell(k);
+      // A full list drops its stale entries before it grows: cells that no
+      // query walks (where the guard decides without searching) would
+      // otherwise keep every face's every listing.
+      if (list.size() == list.capacity()) drop_stale(list);
+      list.push_back({f, static_cast<std::uint8_t>(v << 3 | e.flags), e.x, e.y, e.z});
     });
   }
 
@@ -145,6 +150,13 @@ class Face_grid {
   };
   static constexpr std::uint64_t empty = ~std::uint64_t{0};
 
+
+  void drop_stale(std::vector<Entry>& list) const {
+    std::size_t kept = 0;
+    for (const Entry& e : list)
+      if (version_[e.face] == e.flags >> 3) list[kept++] = e;
+    list.resize(kept);
+  }
 
   std::uint8_t bump(std::uint32_t f) { return version_[f] = static_cast<std::uint8_t>((version_[f] + 1) & 31); }
 
