@@ -71,9 +71,9 @@ enum class Schedule {
   /// CGAL).
   queue,
   /// In passes (meshoptimizer's design): each pass computes every live edge's
-  /// cost once, takes the cheapest in cost order up to a budget (half the
-  /// faces still to remove, and costs up to 1.5x the cost at that rank), and
-  /// collapses them, skipping an edge once a collapse of this pass changed
+  /// cost once, takes the cheapest in cost order up to a budget (costs up to
+  /// 1.5x the cost at the rank of a quarter of the collapses still needed),
+  /// and collapses them, skipping an edge once a collapse of this pass changed
   /// one of its ends (for a memoryless policy or with feature lines: a
   /// vertex next to its ends). No heap: less memory, and the work is
   /// sequential; the order differs, so the result does too (as good by the
