@@ -14,7 +14,6 @@ namespace genmesh {
 
 template <class P>
 Garbage_collection_maps Incidence_mesh<P>::collect_garbage(Garbage_order order) {
-  constexpr std::uint32_t null = Vertex_index::invalid_value;
   const std::vector<std::uint32_t> vmap = detail::compaction_map(vremoved_, order);
   const std::vector<std::uint32_t> emap = detail::compaction_map(eremoved_, order);
   const std::vector<std::uint32_t> fmap = detail::compaction_map(fremoved_, order);
