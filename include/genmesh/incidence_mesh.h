@@ -1546,9 +1546,10 @@ private:
 
   // collect_garbage and renumber: rebuild the matrices with the survivors
   // at their new indices; `any_order`: the maps may reorder (properties
-  // permuted, not compacted in place).
+  // permuted, not compacted in place). hmap: the halfedges' map, from emap
+  // (detail::halfedge_compaction_map).
   void reassemble_(std::span<const std::uint32_t> vmap, std::span<const std::uint32_t> emap,
-                   std::span<const std::uint32_t> fmap, bool any_order);
+                   std::span<const std::uint32_t> hmap, std::span<const std::uint32_t> fmap, bool any_order);
 
   void update_manifold_flags_() {
     const Incidence_manifold_report r = manifold_report();

@@ -238,18 +238,6 @@ void read_attributes(const std::vector<Vertex_attribute<Vertex>>& attributes, co
   }
 }
 
-// The cheapest placement of a, b and their midpoint (ties in that order):
-// the attribute policies' fallback when the optimal point is refused.
-template <class At>
-Placement best_of_ends_and_midpoint(const At& at, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  Placement r = at(a);
-  const Placement pb = at(b);
-  if (pb.cost < r.cost) r = pb;
-  const Placement pm = at(0.5 * (a + b));
-  if (pm.cost < r.cost) r = pm;
-  return r;
-}
-
 // Writes the survivor's weighted values (s.dimension of them at `weighted`),
 // unweighted, into each writable attribute's map.
 template <class Vertex>

@@ -190,6 +190,21 @@ struct Placement {
 };
 
 namespace detail::simplification {
+// The cheapest placement of a, b and their midpoint (ties in that order),
+// `at` giving the placement at a point: the fallback when an optimal point
+// is refused, and the placement on a segment.
+template <class At>
+Placement best_of_ends_and_midpoint(const At& at, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  Placement r = at(a);
+  const Placement pb = at(b);
+  if (pb.cost < r.cost) r = pb;
+  const Placement pm = at(0.5 * (a + b));
+  if (pm.cost < r.cost) r = pm;
+  return r;
+}
+} // namespace detail::simplification
+
+namespace detail::simplification {
 
 // The quadric of triangle (a, b, c): its supporting plane, unit normal,
 // weighted by area·area_factor + (1 − area_factor) (area_factor 0 or 1).

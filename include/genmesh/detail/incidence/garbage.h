@@ -19,7 +19,7 @@ Garbage_collection_maps Incidence_mesh<P>::collect_garbage(Garbage_order order) 
   const std::vector<std::uint32_t> fmap = detail::compaction_map(fremoved_, order);
   const std::vector<std::uint32_t> hmap = detail::halfedge_compaction_map(emap);
 
-  if (garbage_) reassemble_(vmap, emap, fmap, false);
+  if (garbage_) reassemble_(vmap, emap, hmap, fmap, false);
 
   Garbage_collection_maps maps;
   maps.vertices.reserve(vmap.size());
@@ -35,7 +35,8 @@ Garbage_collection_maps Incidence_mesh<P>::collect_garbage(Garbage_order order) 
 
 template <class P>
 void Incidence_mesh<P>::reassemble_(std::span<const std::uint32_t> vmap, std::span<const std::uint32_t> emap,
-                                    std::span<const std::uint32_t> fmap, bool any_order) {
+                                    std::span<const std::uint32_t> hmap, std::span<const std::uint32_t> fmap,
+                                    bool any_order) {
   constexpr std::uint32_t null = Vertex_index::invalid_value;
   // New -> old, to gather the survivors in their new order.
   auto inverse = [](std::span<const std::uint32_t> map, std::size_t kept) {
@@ -77,7 +78,6 @@ void Incidence_mesh<P>::reassemble_(std::span<const std::uint32_t> vmap, std::sp
   for (const std::uint32_t v : vold) pts.push_back(points_[v]);
 
   // The properties move with their elements (assign_incidences keeps them).
-  const std::vector<std::uint32_t> hmap = detail::halfedge_compaction_map(std::vector<std::uint32_t>(emap.begin(), emap.end()));
   if (any_order) {
     vprops_.permute(detail::full_permutation(vmap, vmap.size()), vold.size());
     hprops_.permute(detail::full_permutation(hmap, hmap.size()), 2 * eold.size());
@@ -104,7 +104,8 @@ void Incidence_mesh<P>::renumber(std::span<const std::uint32_t> vmap, std::span<
       detail::full_permutation(emap, emap.size(), &eremoved_).empty() != emap.empty() ||
       detail::full_permutation(fmap, fmap.size(), &fremoved_).empty() != fmap.empty())
     throw invalid_input("Incidence_mesh::renumber: a map is not one to one from the live elements onto [0, live count)");
-  reassemble_(vmap, emap, fmap, true);
+  reassemble_(vmap, emap, detail::halfedge_compaction_map(std::vector<std::uint32_t>(emap.begin(), emap.end())), fmap,
+              true);
 }
 
 } // namespace genmesh

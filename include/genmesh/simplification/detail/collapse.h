@@ -572,12 +572,7 @@ class Collapser {
   // The cheapest of a, b and their midpoint (ties in that order).
   template <class At>
   Placement best_of_three(const At& at, std::size_t a, std::size_t b) const {
-    Placement r = at(pos_[a]);
-    const Placement pb = at(pos_[b]);
-    if (pb.cost < r.cost) r = pb;
-    const Placement pm = at(0.5 * (pos_[a] + pos_[b]));
-    if (pm.cost < r.cost) r = pm;
-    return r;
+    return simplification::best_of_ends_and_midpoint(at, pos_[a], pos_[b]);
   }
 
   // The profile of h's edge, ends a < b (vertex indices), in the canonical
