@@ -954,7 +954,9 @@ class Collapser {
     for (std::size_t i = 0; i < fresh_.size(); ++i) fresh_plane_[i] = plane_of(fresh_[i]);
     for (std::size_t i = 0; i < fresh_.size(); ++i)
       for (std::size_t j = i + 1; j < fresh_.size(); ++j)
-        if (!separated(i, fresh_[j]) && exact_test(fresh_[i], fresh_[j])) return false;
+        if (!off_plane(i, fresh_[j]) && !off_plane(j, fresh_[i]) && !in_projection_separated(i, fresh_[j]) &&
+            exact_test(fresh_[i], fresh_[j]))
+          return false;
     // Against the live faces near the new ones (one query for the union of
     // their boxes; a candidate is tested exactly against each new face whose
     // box its box meets; faces around p or q are skipped: their corners say
@@ -985,12 +987,25 @@ class Collapser {
         pick_candidate(near_[k], ip, iq, all_q);
       }
     }
+    const std::size_t nf = fresh_.size();
     for (const auto& [f, mask] : candidates_) {
       const Mesh_triangle<std::uint32_t> u = slot_triangle(f);
-      for (std::size_t i = 0; i < fresh_.size(); ++i)
-        if ((i < 64 ? (mask >> i) & 1u : slot_[f].b.meets(fresh_box_[i])) && !separated(i, u) &&
+      // u's own plane, for the new faces off_plane leaves undecided (where
+      // the surface curves both ways, u's far corners straddle a new face's
+      // plane while its corners lie on one side of u's): computed once, when
+      // needed.
+      Eigen::Vector3d un;
+      double uscale = 0;
+      for (std::size_t i = 0; i < nf; ++i) {
+        if (!(i < 64 ? (mask >> i) & 1u : slot_[f].b.meets(fresh_box_[i])) || off_plane(i, u)) continue;
+        if (uscale == 0) {
+          un = triangle_normal(u.p[0], u.p[1], u.p[2]);
+          uscale = plane_scale(u);
+        }
+        if (!corners_off_plane(un, uscale, u, fresh_[i]) && !in_projection_separated(i, u) &&
             exact_test(fresh_[i], u))
           return false;
+      }
     }
     return true;
   }
@@ -1026,11 +1041,8 @@ class Collapser {
   // New face t's plane and its projection for the filters below.
   Fresh_plane plane_of(const Mesh_triangle<std::uint32_t>& t) const {
     Fresh_plane pl;
-    const Eigen::Vector3d e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0];
-    const double scale = 1e-13 * e1.cwiseAbs().maxCoeff() * e2.cwiseAbs().maxCoeff();
     pl.n = triangle_normal(t.p[0], t.p[1], t.p[2]);
-    // Where the bound itself could underflow, no filtering.
-    pl.scale = scale > 1e-250 ? scale : std::numeric_limits<double>::infinity();
+    pl.scale = plane_scale(t);
     // The axis t projects along: its normal's largest component, if the
     // projected triangle's orientation is certain (it is that component,
     // computed as orient2d computes it, so Shewchuk's bound applies).
@@ -1078,13 +1090,6 @@ class Collapser {
   static int orientation(const Mesh_triangle<std::uint32_t>& t, int axis) {
     const int s = sure_orient2d(project2(t.p[0], axis), project2(t.p[1], axis), project2(t.p[2], axis));
     return s == unsure ? 0 : s;
-  }
-
-  // Can new face i and face u be shown to meet at most in what they share
-  // by the floating filters: off_plane, or a separating line in new face i's
-  // projection (see in_projection_separated)?
-  bool separated(std::size_t i, const Mesh_triangle<std::uint32_t>& u) const {
-    return off_plane(i, u) || in_projection_separated(i, u);
   }
 
   // Projected along new face t's axis (one-to-one on t's plane), is there an
@@ -1151,18 +1156,32 @@ class Collapser {
   // the 3×3 determinant, taken 20 times larger); faces_intersect decides
   // whatever it does not.
   bool off_plane(std::size_t i, const Mesh_triangle<std::uint32_t>& u) const {
-    const Fresh_plane& pl = fresh_plane_[i];
-    const auto& t = fresh_[i];
+    return corners_off_plane(fresh_plane_[i].n, fresh_plane_[i].scale, fresh_[i], u);
+  }
+
+  // The same for the corners of u that t does not share and t's plane
+  // with normal n (triangle_normal of t) and filter scale `scale` (see
+  // plane_scale).
+  static bool corners_off_plane(const Eigen::Vector3d& n, double scale, const Mesh_triangle<std::uint32_t>& t,
+                                const Mesh_triangle<std::uint32_t>& u) {
     int side = 0;
     for (int c = 0; c < 3; ++c) {
       if (u.id[c] == t.id[0] || u.id[c] == t.id[1] || u.id[c] == t.id[2]) continue;
       const Eigen::Vector3d d = u.p[c] - t.p[0];
-      const double s = pl.n.dot(d), bound = pl.scale * d.cwiseAbs().maxCoeff();
+      const double s = n.dot(d), bound = scale * d.cwiseAbs().maxCoeff();
       const int sc = s > bound ? 1 : s < -bound ? -1 : 0;
       if (sc == 0 || (side != 0 && sc != side)) return false;
       side = sc;
     }
     return side != 0;
+  }
+
+  // off_plane's error scale for triangle t (about 8ε times the permanent of
+  // the 3×3 determinant, taken 20 times larger; infinite where the bound
+  // itself could underflow: no filtering).
+  static double plane_scale(const Mesh_triangle<std::uint32_t>& t) {
+    const double scale = 1e-13 * (t.p[1] - t.p[0]).cwiseAbs().maxCoeff() * (t.p[2] - t.p[0]).cwiseAbs().maxCoeff();
+    return scale > 1e-250 ? scale : std::numeric_limits<double>::infinity();
   }
 
   // The cosine of the triangle's smallest angle.
