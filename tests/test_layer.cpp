@@ -662,4 +662,49 @@ TEST(ScratchPropertyAdaptors, OpenMeshAndPolyhedronWithIds) {
   run(Polyhedron_with_ids{});
 }
 
+// ---------------------------------------------------------------------------
+// Points by vertex index (detail::Point_reader, what simplify reads): the
+// mesh's own array where the backend hands it out (HasNativePointArray), a
+// copy in double elsewhere; the mesh's points either way.
+
+static_assert(genmesh::HasNativePointArray<genmesh_test::Halfedge_mesh> &&
+              genmesh::HasNativePointArray<genmesh_test::Surface_mesh> &&
+              genmesh::HasNativePointArray<genmesh_test::Incidence_mesh>);
+static_assert(!genmesh::HasNativePointArray<Polyhedron_with_ids> && !genmesh::HasNativePointArray<Om_tri>);
+
+template <class G>
+void check_point_reader(G g) {
+  genmesh::build_mesh(genmesh::make_icosphere(2), g);
+  using P = genmesh::point_t<G>;
+  const auto idx = get(genmesh::vertex_index, std::as_const(g));
+  auto pm = get(genmesh::vertex_point, g);
+  const std::size_t bound = index_bound(genmesh::vertex_index, g);
+  genmesh::detail::Point_reader<G> r(g, bound);
+  ASSERT_EQ(r.size(), bound);
+  for (auto v : vertices(g))
+    EXPECT_EQ(Eigen::Vector3d(r[static_cast<std::size_t>(get(idx, v))]), genmesh::to_eigen(P(get(pm, v))));
+  // A point written through the map: a native array shows it at once, the
+  // copy after set().
+  const auto v = *vertices(g).begin();
+  const auto i = static_cast<std::size_t>(get(idx, v));
+  const Eigen::Vector3d p(0.25, -1.5, 3.0);
+  put(pm, v, genmesh::from_eigen<P>(p));
+  if constexpr (genmesh::detail::Point_reader<G>::native) {
+    EXPECT_EQ(Eigen::Vector3d(r[i]), p);
+    EXPECT_EQ(r.address(i), static_cast<const void*>(&get(pm, v)));
+  } else {
+    EXPECT_NE(Eigen::Vector3d(r[i]), p);
+    r.set(i, p);
+    EXPECT_EQ(Eigen::Vector3d(r[i]), p);
+  }
+}
+
+TEST(PointReader, ReadsTheMeshsPointsOnEveryBackend) {
+  check_point_reader(genmesh_test::Halfedge_mesh{});
+  check_point_reader(genmesh_test::Surface_mesh{});
+  check_point_reader(genmesh_test::Incidence_mesh{});
+  check_point_reader(Polyhedron_with_ids{});
+  check_point_reader(Om_tri{});
+}
+
 } // namespace

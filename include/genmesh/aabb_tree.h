@@ -20,8 +20,9 @@
 // Boxes are stored in float, rounded outward, so they stay conservative;
 // distances to them are computed in float with a margin that keeps them
 // lower bounds.
-// Large arrays use transparent huge pages where the system offers them
-// (detail/memory/large_allocator.h): first-touch page faults were half the build.
+// Arrays of 1 MiB and more use transparent huge pages where the system
+// offers them (detail/memory/large_allocator.h): first-touch page faults
+// were half the build.
 // The tree is a snapshot: it does not follow later edits of the mesh.
 //
 // Guarantees: closest_point returns a point of the nearest triangle, the
@@ -653,17 +654,24 @@ private:
     return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
   }
 
-  // One triangle's float box and centroid, for the build only.
+  // One triangle's float box, for the build only (its centre, the sort key,
+  // is computed from it where needed: 24 bytes instead of 40).
   struct Build_prim {
-    float lo[3], hi[3], c[3];
-    std::uint32_t index;
+    float lo[3], hi[3];
+    float centre(int k) const { return 0.5f * (lo[k] + hi[k]); }
   };
 
   // Pass 1 gathers the fan triangles' faces, corners and float boxes in
-  // face order; the prims are sorted into Morton order and the tree is cut
-  // from the sorted codes, boxes bottom-up; pass 2 fills tris_ and info_ in
-  // leaf order. Peak: the triangles (88 B each for 32-bit indices) plus
-  // ~100 B per triangle during the build.
+  // face order; their keys are sorted into Morton order and the tree is cut
+  // from the sorted codes (children first, so that the nodes are allocated
+  // once at their exact count), boxes bottom-up; pass 2 fills tris_ and
+  // info_ in leaf order. Every byte touched for the first time costs a page
+  // fault (~15 µs per 4 KiB on the VMs measured), so the build keeps few
+  // temporaries: per triangle 16 B of keys (twice while sorting), 24 B of
+  // float box and the Info (16 B for 32-bit handles), none of them copied
+  // in sorted order (session 8: armadillo's build 3 200 -> 670 faults with
+  // the huge pages of large_vector, docs/benchmarks.md). The tree itself:
+  // 88 B per triangle and ~40 B of nodes (32-bit handles).
   template <class PointMap>
   void build(const G& g, PointMap pm) {
     std::size_t count = 0;
@@ -692,9 +700,7 @@ private:
           const double lo = std::min({p0[k], pp[k], pc[k]}), hi = std::max({p0[k], pp[k], pc[k]});
           b.lo[k] = down(lo);
           b.hi[k] = up(hi);
-          b.c[k] = 0.5f * (b.lo[k] + b.hi[k]);
         }
-        b.index = static_cast<std::uint32_t>(info.size());
         prims.push_back(b);
         info.push_back(Info{f, {v0, vp, vc}});
         vp = vc;
@@ -709,8 +715,12 @@ private:
     const std::size_t n = info.size();
     if (n == 0) return;
     if (n >= npos / 2) throw invalid_input("Aabb_tree: too many triangles");
+    std::vector<std::uint32_t> leaf(n); // leaf order -> pass-1 order
     Fbox root_centers;
-    for (const Build_prim& b : prims) root_centers.extend(b.c, b.c);
+    for (const Build_prim& b : prims) {
+      const float c[3] = {b.centre(0), b.centre(1), b.centre(2)};
+      root_centers.extend(c, c);
+    }
     {
       // Morton order of the centroids (21 bits per axis), by LSD radix sort.
       float scale[3];
@@ -727,7 +737,7 @@ private:
         std::uint64_t c = 0;
         for (int k = 0; k < 3; ++k)
           c |= detail::morton_spread(std::min<std::uint64_t>(
-                   static_cast<std::uint64_t>((prims[i].c[k] - root_centers.lo[k]) * scale[k]), 2097151))
+                   static_cast<std::uint64_t>((prims[i].centre(k) - root_centers.lo[k]) * scale[k]), 2097151))
                << k;
         keys[i] = {c, static_cast<std::uint32_t>(i)};
       }
@@ -739,10 +749,9 @@ private:
         for (const Keyed& kk : keys) tmp[hist[(kk.code >> shift) & 2047]++] = kk;
         keys.swap(tmp);
       }
-      detail::large_vector<Build_prim> sorted(n);
-      for (std::size_t i = 0; i < n; ++i) sorted[i] = prims[keys[i].index];
-      prims.swap(sorted);
-      detail::large_vector<Build_prim>().swap(sorted);
+      detail::large_vector<Keyed>().swap(tmp);
+      // Leaf i is triangle keys[i].index of pass 1 (prims and info stay in
+      // face order: no sorted copy).
       // A range of sorted triangles splits at the highest Morton bit in
       // which its first and last codes differ (the median when they are
       // equal): Karras's binary tree. A node takes its range and splits the
@@ -760,12 +769,12 @@ private:
         }
         return hi;
       };
-      nodes_.reserve(n / 2 + 1);
-      Node empty_node;
-      for (int k = 0; k < 3; ++k)
-        for (int c = 0; c < 4; ++c) empty_node.lo[k][c] = inf_f, empty_node.hi[k][c] = -inf_f;
-      for (int c = 0; c < 4; ++c) empty_node.child[c] = npos;
-      nodes_.push_back(empty_node);
+      // The topology first (children only, 16 bytes a node), so that the
+      // nodes are allocated once at their exact count and written once.
+      using Kids = std::array<std::uint32_t, 4>;
+      std::vector<Kids> kids;
+      kids.reserve(n / 2 + 1);
+      kids.push_back({npos, npos, npos, npos});
       struct Range {
         std::uint32_t node, begin, end;
       };
@@ -787,41 +796,47 @@ private:
         }
         for (int i = 0; i < parts; ++i) {
           if (part[i + 1] - part[i] == 1) {
-            nodes_[r.node].child[i] = tri_bit | part[i];
+            kids[r.node][static_cast<std::size_t>(i)] = tri_bit | part[i];
             continue;
           }
-          const auto child = static_cast<std::uint32_t>(nodes_.size());
-          nodes_.push_back(empty_node);
-          nodes_[r.node].child[i] = child;
+          const auto child = static_cast<std::uint32_t>(kids.size());
+          kids.push_back({npos, npos, npos, npos});
+          kids[r.node][static_cast<std::size_t>(i)] = child;
           todo.push_back({child, part[i], part[i + 1]});
         }
       }
       // Boxes bottom-up: children come after their parent.
-      std::vector<Fbox> whole(nodes_.size());
-      for (std::size_t i = nodes_.size(); i-- > 0;) {
+      nodes_.resize(kids.size());
+      std::vector<Fbox> whole(kids.size());
+      for (std::size_t i = kids.size(); i-- > 0;) {
         Node& nd = nodes_[i];
         for (int c = 0; c < 4; ++c) {
-          const std::uint32_t ch = nd.child[c];
-          if (ch == npos) continue;
-          const Fbox b = (ch & tri_bit) ? Fbox{{prims[ch & ~tri_bit].lo[0], prims[ch & ~tri_bit].lo[1],
-                                                prims[ch & ~tri_bit].lo[2]},
-                                               {prims[ch & ~tri_bit].hi[0], prims[ch & ~tri_bit].hi[1],
-                                                prims[ch & ~tri_bit].hi[2]}}
-                                            : whole[ch];
+          const std::uint32_t ch = kids[i][static_cast<std::size_t>(c)];
+          nd.child[c] = ch;
+          Fbox b; // empty for a missing child
+          if (ch == npos) {
+          } else if (ch & tri_bit) {
+            const Build_prim& p = prims[keys[ch & ~tri_bit].index];
+            b = Fbox{{p.lo[0], p.lo[1], p.lo[2]}, {p.hi[0], p.hi[1], p.hi[2]}};
+          } else {
+            b = whole[ch];
+          }
           for (int k = 0; k < 3; ++k) nd.lo[k][c] = b.lo[k], nd.hi[k][c] = b.hi[k];
-          whole[i].extend(b.lo, b.hi);
+          if (ch != npos) whole[i].extend(b.lo, b.hi);
         }
       }
+      // Pass 2's order: leaf i is triangle keys[i].index of pass 1.
+      for (std::size_t i = 0; i < n; ++i) leaf[i] = keys[i].index;
     }
-    nodes_.shrink_to_fit();
     // Pass 2, in leaf order: the triangles' faces and corners, and their
     // points read again from the mesh (independent reads, unlike a
     // permutation in place, which chains them).
-    info_.resize(n);
-    tris_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) info_[i] = info[prims[i].index];
     detail::large_vector<Build_prim>().swap(prims);
+    info_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) info_[i] = info[leaf[i]];
     detail::large_vector<Info>().swap(info);
+    std::vector<std::uint32_t>().swap(leaf);
+    tris_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       const auto& c = info_[i].corners;
       for (int k = 0; k < 3; ++k) tris_[i].p[k] = point(c[k], g, pm);

@@ -707,6 +707,12 @@ public:
   const Point& point(Vertex_index v) const { return points_[v]; }
   /// The positions, as a vertex property (a boost lvalue property map).
   [[nodiscard]] Vertex_property<Point> points() const { return points_; }
+  /// The positions as one array by vertex index (removed vertices' slots
+  /// included), valid until a vertex is added or the garbage is collected.
+  [[nodiscard]] std::span<const Point> point_array() const {
+    const auto& a = points_.array().storage();
+    return {a.data(), a.size()};
+  }
 
   /// Back to a new, empty mesh: every element and every property but the
   /// positions is gone; recycling is on again.

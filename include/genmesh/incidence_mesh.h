@@ -1170,6 +1170,9 @@ public:
   [[nodiscard]] Incidence_point_map<P> points() const {
     return {const_cast<std::vector<P>*>(&points_)};
   }
+  /// The positions as one array by vertex index (removed vertices' slots
+  /// included), valid until a vertex is added or the garbage is collected.
+  [[nodiscard]] std::span<const Point> point_array() const { return {points_.data(), points_.size()}; }
 
   // ---- bulk building (genmesh_native_link_soup, load_soup) ----------------
 

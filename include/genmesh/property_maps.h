@@ -25,9 +25,14 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <Eigen/Core>
+
 #include <concepts>
 #include <cstddef>
+#include <span>
+#include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace genmesh {
 
@@ -57,6 +62,18 @@ concept HasVertexPoints = requires(G& g) {
   get(vertex_point, g);
 } && Point3<point_t<G>>;
 
+/// A graph whose points lie in one array indexed by vertex index, which it
+/// hands out through the native hook
+///   genmesh_native_point_array(vertex_point, g)   // const g, found by ADL
+/// returning std::span<const point_t<G>> of index_bound(vertex_index, g)
+/// points (removed vertices' slots included), valid until a vertex is added
+/// or the garbage is collected; writes still go through the point map.
+/// genmesh's meshes and CGAL::Surface_mesh (<genmesh/adaptors/cgal.h>) do.
+template <class G>
+concept HasNativePointArray = HasVertexPoints<G> && requires(const G& g) {
+  { genmesh_native_point_array(vertex_point, g) } -> std::same_as<std::span<const point_t<G>>>;
+};
+
 /// A graph with integer indices for Tag's elements (unique, below the bound, not
 /// necessarily dense), and their bound.
 template <class G, class Tag>
@@ -64,6 +81,59 @@ concept HasIndexMap = requires(const G& g) {
   get(Tag{}, g);
   { index_bound(Tag{}, g) } -> std::convertible_to<std::size_t>;
 };
+
+namespace detail {
+
+/// g's points by vertex index as Eigen::Vector3d, for algorithms that read
+/// them in inner loops: the mesh's own array when it has one
+/// (HasNativePointArray; no copy, a reference when the points are
+/// Eigen::Vector3d), else a copy in double made at construction, which
+/// set() keeps current (the caller writes the mesh through its point map
+/// as well). Valid while no vertex is added; reads of live vertices only.
+template <class G>
+class Point_reader {
+public:
+  static constexpr bool native = HasNativePointArray<G>;
+
+  Point_reader() = default;
+  explicit Point_reader(const G& g, std::size_t bound) {
+    if constexpr (native) {
+      points_ = genmesh_native_point_array(vertex_point, g);
+    } else {
+      using P = point_t<G>;
+      copy_.assign(bound, Eigen::Vector3d::Zero());
+      auto pm = get(vertex_point, g);
+      auto index = get(vertex_index, g);
+      for (const auto v : vertices(g)) copy_[static_cast<std::size_t>(get(index, v))] = to_eigen(P(get(pm, v)));
+    }
+  }
+
+  decltype(auto) operator[](std::size_t i) const {
+    if constexpr (!native) return static_cast<const Eigen::Vector3d&>(copy_[i]);
+    else if constexpr (std::is_same_v<point_t<G>, Eigen::Vector3d>) return static_cast<const Eigen::Vector3d&>(points_[i]);
+    else return to_eigen(points_[i]);
+  }
+  /// Where point i lies (for prefetching).
+  const void* address(std::size_t i) const {
+    if constexpr (native) return &points_[i];
+    else return &copy_[i];
+  }
+  /// After the mesh's point i became p.
+  void set(std::size_t i, const Eigen::Vector3d& p) {
+    if constexpr (!native) copy_[i] = p;
+    else (void)i, (void)p;
+  }
+  std::size_t size() const {
+    if constexpr (native) return points_.size();
+    else return copy_.size();
+  }
+
+private:
+  std::span<const point_t<G>> points_;
+  std::vector<Eigen::Vector3d> copy_; // empty when native
+};
+
+} // namespace detail
 
 /// While alive, new elements of g get fresh indices (appended) instead of
 /// reusing the indices of removed ones, on every mesh that recycles

@@ -96,6 +96,7 @@
 #include <cstddef>
 #include <iterator>
 #include <memory>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -120,6 +121,12 @@ struct Point_traits<CGAL::Point_3<K>> {
 template <class P>
 auto get(vertex_point_t, const CGAL::Surface_mesh<P>& sm) {
   return sm.points();
+}
+
+/// The "v:point" array itself (HasNativePointArray, <genmesh/property_maps.h>).
+template <class P>
+std::span<const P> genmesh_native_point_array(vertex_point_t, const CGAL::Surface_mesh<P>& sm) {
+  return {sm.points().data(), static_cast<std::size_t>(sm.num_vertices())};
 }
 
 /// Surface_mesh indices are the descriptors' idx(): removed, not yet

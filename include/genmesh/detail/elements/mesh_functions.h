@@ -87,6 +87,12 @@ template <template <class> class M, class P>
 auto get(vertex_point_t, const M<P>& m) -> decltype(m.points()) {
   return m.points();
 }
+/// The points' own array (HasNativePointArray, <genmesh/property_maps.h>).
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+std::span<const P> genmesh_native_point_array(vertex_point_t, const M<P>& m) {
+  return m.point_array();
+}
 template <template <class> class M, class P>
   requires detail::is_genmesh_mesh<M>
 Index_map<Vertex_index> get(vertex_index_t, const M<P>&) {

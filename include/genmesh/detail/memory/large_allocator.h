@@ -1,11 +1,15 @@
 // genmesh/detail/memory/large_allocator.h — an allocator for large, short-lived
-// arrays: blocks of 4 MiB and more are 2 MiB-aligned and marked for
+// arrays: blocks of 1 MiB and more are 2 MiB-aligned and marked for
 // transparent huge pages (madvise MADV_HUGEPAGE where the system offers it),
 // so that touching them for the first time costs one page fault per 2 MiB
 // instead of one per 4 KiB. On virtual machines a fault costs ~10 µs
 // (measured: 100 MB first touched in 0.37 s with 4 KiB pages, 0.01–0.24 s
-// with huge pages), which dominated building an Aabb_tree. Smaller blocks
-// go through operator new. Stateless; equal to every other instance.
+// with huge pages), which dominated building an Aabb_tree. From 1 MiB (was 4
+// MiB): armadillo's remeshing tree (3.7 MB of triangles, 2 MB of nodes) then
+// faults ~2 500 times less, at the price of rounding each such block up to
+// whole 2 MiB pages (peak heap 15.5 -> 17.4 MB there; docs/benchmarks.md,
+// "Isotropic remeshing, session 8"). Smaller blocks go through operator new.
+// Stateless; equal to every other instance.
 #pragma once
 
 #include <cstddef>
@@ -22,7 +26,7 @@ template <class T>
 struct Large_allocator {
   using value_type = T;
   static constexpr std::size_t huge_page = std::size_t(2) << 20;
-  static constexpr std::size_t threshold = std::size_t(4) << 20;
+  static constexpr std::size_t threshold = std::size_t(1) << 20;
 
   Large_allocator() = default;
   template <class U>

@@ -80,12 +80,22 @@ public:
   void attach_vertex_values(const G& g, const std::vector<double>& by_vertex_index) {
     values_.assign(3 * tree_->triangle_count(), 0.0);
     for (std::size_t t = 0; t < tree_->triangle_count(); ++t)
-      for (int i = 0; i < 3; ++i) {
-        const auto c = tree_->triangle_corners(t)[static_cast<std::size_t>(i)];
-        const std::size_t vi = copy_ ? source_vertex_[static_cast<std::size_t>(get(get(vertex_index, *copy_), c))]
-                                     : static_cast<std::size_t>(get(get(vertex_index, g), c));
-        values_[3 * t + static_cast<std::size_t>(i)] = by_vertex_index[vi];
-      }
+      for (int i = 0; i < 3; ++i)
+        values_[3 * t + static_cast<std::size_t>(i)] = by_vertex_index[corner_index(g, t, i)];
+  }
+
+  /// For each vertex of the g given to the constructor (by vertex index,
+  /// below vertex_bound), the first indexed triangle (in leaf order) that
+  /// has it as a corner; npos for a vertex on none (call before g changes).
+  /// The start triangles of the first projection: a vertex moved a little
+  /// from where it was is nearest to one of its own triangles, or to one
+  /// beside them. The same on every backend (the tree is).
+  std::vector<std::size_t> corner_triangles(const G& g, std::size_t vertex_bound) const {
+    std::vector<std::size_t> out(vertex_bound, npos);
+    for (std::size_t t = 0; t < tree_->triangle_count(); ++t)
+      for (int i = 0; i < 3; ++i)
+        if (std::size_t& o = out[corner_index(g, t, i)]; o == npos) o = t;
+    return out;
   }
 
   /// The point of the surface nearest to q, given a point `on` of the
@@ -117,6 +127,13 @@ public:
   std::size_t triangle_count() const { return tree_->triangle_count(); }
 
 private:
+  // g's vertex index of corner i of indexed triangle t.
+  std::size_t corner_index(const G& g, std::size_t t, int i) const {
+    const auto c = tree_->triangle_corners(t)[static_cast<std::size_t>(i)];
+    return copy_ ? source_vertex_[static_cast<std::size_t>(get(get(vertex_index, *copy_), c))]
+                 : static_cast<std::size_t>(get(get(vertex_index, g), c));
+  }
+
   Eigen::Vector3d answer(const Eigen::Vector3d& q, const typename Aabb_tree<G>::Closest& c, std::size_t& triangle,
                          double* value) const {
     triangle = c.triangle;

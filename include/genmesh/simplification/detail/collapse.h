@@ -2,12 +2,14 @@
 // genmesh::simplify (private; see <genmesh/simplification.h>).
 //
 // Per vertex: the policy's data (a plane quadric in 10 floats relative to
-// the vertex's point, Relative_quadric; nothing for a memoryless policy), a
-// copy of the point in double, locked / on-a-feature-line flags
+// the vertex's point, Relative_quadric; nothing for a memoryless policy),
+// locked / on-a-feature-line flags
 // and a "has a refused edge" hint; per edge: the descriptor, refused and
 // feature flags; per face (with the self-intersection guard): its box
 // (float) and corners, in a spatial hash. Collapse never adds elements, so
-// these are vectors sized once by the index bounds.
+// these are vectors sized once by the index bounds. Points are read from the
+// mesh's own array where it has one (HasNativePointArray: genmesh's meshes,
+// Surface_mesh), else from a copy in double.
 //
 // One collapse: pop the cheapest edge; recompute its placement (the same
 // numbers as when it was queued; where locks and feature lines allow it);
@@ -217,15 +219,10 @@ class Collapser {
     }
     faces_ = fnum;
     const std::size_t vb = index_bound(vertex_index, g_), eb = index_bound(edge_index, g_);
-    pos_.assign(vb, Eigen::Vector3d::Zero());
-    auto pm = get(vertex_point, g_);
-    using P = point_t<G>;
-    for (const V v : vertices(g_)) {
-      const Eigen::Vector3d p = to_eigen(P(get(pm, v)));
-      if (!p.allFinite())
+    pos_ = genmesh::detail::Point_reader<G>(g_, vb);
+    for (const V v : vertices(g_))
+      if (!Eigen::Vector3d(pos_[vi(v)]).allFinite())
         throw invalid_input("simplify: vertex " + std::to_string(vi(v)) + " has a non-finite coordinate");
-      pos_[vi(v)] = p;
-    }
     if (o_.check_input) check_manifold(vb, eb);
   }
 
@@ -265,6 +262,11 @@ class Collapser {
     else data_[i] = d;
   }
   void add_data(std::size_t i, const Data& d) { set_data(i, simplification::merge(policy_, vertex_data(i), d)); }
+  // The merged data of p and q (nothing for a memoryless policy).
+  Data merged_data_of([[maybe_unused]] std::size_t p, [[maybe_unused]] std::size_t q) const {
+    if constexpr (memoryless) return Data{};
+    else return simplification::merge(policy_, vertex_data(p), vertex_data(q));
+  }
 
   // The box of the vertices' points (empty without vertices).
   Eigen::AlignedBox3d points_box() const {
@@ -1028,7 +1030,7 @@ class Collapser {
     for (std::size_t i = 0; i < std::min<std::size_t>(fresh_.size(), 64); ++i)
       mask |= static_cast<std::uint64_t>(sl.b.meets(fresh_box_[i])) << i;
     if (mask == 0 && fresh_.size() <= 64) return;
-    for (const std::uint32_t v : sl.v) prefetch(&pos_[v]);
+    for (const std::uint32_t v : sl.v) prefetch(pos_.address(v));
     candidates_.push_back({f, mask});
   }
 
@@ -1281,18 +1283,18 @@ class Collapser {
         grid_.remove(sf);
       }
     }
+    // The survivor's data before the collapse: it reads both ends' points
+    // (a stored quadric is relative to its vertex's point), which the
+    // collapse removes (p) and moves (q).
+    [[maybe_unused]] const Data merged_data = merged_data_of(ip, iq);
     vis_.on_collapse_placement(h, std::as_const(pl.position), pl.cost, std::as_const(g_));
     Point_writer writer{{}, this, pl.position};
     if (!genmesh::collapse_edge(e, g_, writer)) return false; // can_collapse_edge said yes: never happens
-
+    pos_.set(iq, pl.position); // the mesh has it (Point_writer); a private copy follows
     if constexpr (!memoryless) {
-      const Data merged = simplification::merge(policy_, vertex_data(ip), vertex_data(iq));
-      pos_[iq] = pl.position;
-      set_data(iq, merged); // relative to the new point
-      if constexpr (requires { policy_.collapsed(iq, merged, pl.position); })
-        policy_.collapsed(iq, merged, pl.position); // the survivor's attribute values
-    } else {
-      pos_[iq] = pl.position;
+      set_data(iq, merged_data); // relative to the new point
+      if constexpr (requires { policy_.collapsed(iq, merged_data, pl.position); })
+        policy_.collapsed(iq, merged_data, pl.position); // the survivor's attribute values
     }
     faces_ -= static_cast<std::size_t>(top) + static_cast<std::size_t>(bottom);
     if constexpr (memoryless) ++epoch_;
@@ -1403,7 +1405,9 @@ class Collapser {
   std::size_t faces_ = 0;
   double cos_max_ = 0.5;
   double cos_min_angle_ = 1.0; // cos(.min_angle); 1: no limit
-  std::vector<Eigen::Vector3d> pos_;
+  // The points by vertex index: the mesh's own array, or a copy in double
+  // where the mesh has none (genmesh::detail::Point_reader).
+  genmesh::detail::Point_reader<G> pos_;
   std::vector<Stored> data_;
   // Schedule::passes: per pass, the candidate edges (float cost bits « 32 |
   // edge index, ties then ordered by vertex-index pair) and the vertices a
