@@ -1015,15 +1015,19 @@ private:
     const V x = source(h, g_), y = target(h, g_);
     const Eigen::Vector3d px = pt(x), py = pt(y);
     bool ok = true;
+    // The lengths first, around the whole ring: most attempts that fail,
+    // fail here, before any of the normals below is computed.
+    for_each_in_any_order(x, [&](H in) {
+      if (!ok) return;
+      const V a = source(in, g_);
+      if (a != y && (pt(a) - py).squaredNorm() > hi2(a, y)) ok = false;
+    });
+    if (!ok) return false;
     for_each_in_any_order(x, [&](H in) {
       if (!ok) return;
       const V a = source(in, g_);
       if (a == y) return;
       const Eigen::Vector3d pa = pt(a);
-      if ((pa - py).squaredNorm() > hi2(a, y)) {
-        ok = false;
-        return;
-      }
       if (is_border(in)) return;
       const V b = target(next(in, g_), g_);
       if (b == y) return;
