@@ -93,8 +93,7 @@ Remeshing_result isotropic_remeshing(G& g, const Remeshing_options& options = {}
     // the clean-up decide the quality (armadillo: 8 % fewer instructions,
     // valence 6 share up, docs/benchmarks.md session 5).
     const bool last = i + 1 == options.iterations;
-    r.tangential_relaxation(last ? options.smoothing_steps : (options.smoothing_steps + 1) / 2);
-    r.project();
+    r.tangential_relaxation_and_project(last ? options.smoothing_steps : (options.smoothing_steps + 1) / 2);
     r.remove_bad_triangles();
     ++r.result().iterations;
     visitor.on_step("iteration", static_cast<std::size_t>(i + 1), static_cast<std::size_t>(options.iterations));

@@ -558,8 +558,21 @@ public:
   // tangential_relaxation, projection
   // -------------------------------------------------------------------------
 
-  std::size_t tangential_relaxation_and_project() {
-    const std::size_t n = tangential_relaxation();
+  std::size_t tangential_relaxation_and_project() { return tangential_relaxation_and_project(o_.smoothing_steps); }
+
+  /// tangential_relaxation(steps), then project(). Without an observing
+  /// visitor (Mutation_visitor), in one pass: each vertex is projected from
+  /// the smoothing's own array of positions, in its order, and written once
+  /// (armadillo: one pass over the vertices in a spatial order, with its
+  /// random reads and writes of the mesh's points, less a round; session 8).
+  /// The same points either way: every query is independent of the others,
+  /// and it starts from the point as the mesh stores it (rounded to its point
+  /// type, as set_pt then pt would give it).
+  std::size_t tangential_relaxation_and_project(int steps) {
+    if constexpr (std::is_same_v<Visitor, Mutation_visitor>) {
+      if (ref_ && o_.smoothing != Smoothing::none && steps > 0) return tangential_relaxation(steps, true);
+    }
+    const std::size_t n = tangential_relaxation(steps);
     project();
     return n;
   }
@@ -567,8 +580,10 @@ public:
   /// Returns the number of free vertices (moved at each step).
   std::size_t tangential_relaxation() { return tangential_relaxation(o_.smoothing_steps); }
 
-  /// As tangential_relaxation(), with `steps` steps instead of options.smoothing_steps.
-  std::size_t tangential_relaxation(int steps) {
+  /// As tangential_relaxation(), with `steps` steps instead of
+  /// options.smoothing_steps; with and_project (only without an observing
+  /// visitor), projects as well (tangential_relaxation_and_project).
+  std::size_t tangential_relaxation(int steps, bool and_project = false) {
     if (o_.smoothing == Smoothing::none || steps <= 0) return 0;
     grow();
     // The topology does not change while smoothing: read each free vertex's
@@ -609,6 +624,20 @@ public:
       }
       for (std::size_t i = 0; i < free_id.size(); ++i)
         if (moved[i].allFinite()) pos[free_id[i]] = moved[i];
+    }
+    if (and_project) {
+      for (std::size_t i = 0; i < order.size(); ++i) {
+        const V v = order[i];
+        if (vflag_at(v) & v_fixed) continue;
+        const Eigen::Vector3d p = to_eigen(from_eigen<point_t<G>>(pos[i])); // as the mesh stores it
+        Eigen::Vector3d& on = on_[vid(v)];
+        on = ref_->project(p, on, on_triangle_[vid(v)], sizing_.empty() ? nullptr : &sizing_[vid(v)]);
+        set_pt(v, on);
+      }
+      // Vertices without edges are not smoothed, but project() moves them.
+      for (auto v : vertices(g_))
+        if (halfedge(v, g_) == null_h() && !(vflag_at(v) & v_fixed)) project_vertex(v);
+      return free_id.size();
     }
     for (const std::uint32_t i : free_id) {
       set_pt(order[i], pos[i]);
@@ -717,14 +746,17 @@ public:
     // instructions (the 4-wide tree) left their time unchanged; sorted, their
     // L1 misses halve (armadillo: 2.3M -> 1.2M) and the step takes ~25 % less
     // time. Each query is independent of the others.
-    for (const V v : spatial_order([&](V x) { return !(vflag_at(x) & v_fixed); })) {
-      Eigen::Vector3d& on = on_[vid(v)];
-      const Eigen::Vector3d p = pt(v);
-      on = ref_->project(p, on, on_triangle_[vid(v)], sizing_.empty() ? nullptr : &sizing_[vid(v)]);
-      if (on == p) continue;
-      set_pt(v, on);
-      vis_->on_vertex_moved(v, std::as_const(g_));
-    }
+    for (const V v : spatial_order([&](V x) { return !(vflag_at(x) & v_fixed); })) project_vertex(v);
+  }
+
+  /// Projects v onto the reference surface (project()'s step for one vertex).
+  void project_vertex(V v) {
+    Eigen::Vector3d& on = on_[vid(v)];
+    const Eigen::Vector3d p = pt(v);
+    on = ref_->project(p, on, on_triangle_[vid(v)], sizing_.empty() ? nullptr : &sizing_[vid(v)]);
+    if (on == p) return;
+    set_pt(v, on);
+    vis_->on_vertex_moved(v, std::as_const(g_));
   }
 
   /// The vertices for which keep(v) holds, bucketed by the reference
@@ -863,9 +895,12 @@ private:
   /// halfedges into v) in for_each_in's order, without a ring of halfedges:
   /// walked once, then rotated to the canonical start.
   void append_ring(V v, std::vector<std::uint32_t>& out) const {
-    const auto base = static_cast<std::ptrdiff_t>(out.size());
-    const std::size_t first = walk_ring(v, [&](H x) { out.push_back(vid(source(x, g_))); });
-    std::rotate(out.begin() + base, out.begin() + base + static_cast<std::ptrdiff_t>(first), out.end());
+    // Into a local array first: one append per ring (a push_back per
+    // neighbour was 2 % of remeshing's instructions, not inlined).
+    boost::container::small_vector<std::uint32_t, 16> r;
+    const std::size_t first = walk_ring(v, [&](H x) { r.push_back(vid(source(x, g_))); });
+    out.insert(out.end(), r.begin() + static_cast<std::ptrdiff_t>(first), r.end());
+    out.insert(out.end(), r.begin(), r.begin() + static_cast<std::ptrdiff_t>(first));
   }
 
   /// Calls f(x) for every halfedge x into v, from halfedge(v); returns the
@@ -983,15 +1018,19 @@ private:
     const V x = source(h, g_), y = target(h, g_);
     const Eigen::Vector3d px = pt(x), py = pt(y);
     bool ok = true;
+    // The lengths first, around the whole ring: most attempts that fail,
+    // fail here, before any of the normals below is computed.
+    for_each_in_any_order(x, [&](H in) {
+      if (!ok) return;
+      const V a = source(in, g_);
+      if (a != y && (pt(a) - py).squaredNorm() > hi2(a, y)) ok = false;
+    });
+    if (!ok) return false;
     for_each_in_any_order(x, [&](H in) {
       if (!ok) return;
       const V a = source(in, g_);
       if (a == y) return;
       const Eigen::Vector3d pa = pt(a);
-      if ((pa - py).squaredNorm() > hi2(a, y)) {
-        ok = false;
-        return;
-      }
       if (is_border(in)) return;
       const V b = target(next(in, g_), g_);
       if (b == y) return;
