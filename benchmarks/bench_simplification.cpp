@@ -175,6 +175,14 @@ void run_case(benchmark::State& state, Input in, Make make, Run run, Result resu
   state.counters["peak_MB"] = static_cast<double>(peak) / 1e6;
 }
 
+// The input as a mesh of type G (the soup is valid: no check).
+template <class G>
+G input_mesh(Input in) {
+  G g;
+  genmesh::build_mesh(soup(in), g, {.check = false});
+  return g;
+}
+
 // genmesh's simplify with `Policy` on mesh type G; `guard`: .prevent_self_intersections;
 // `schedule`: .schedule.
 template <class G, class Policy = genmesh::Plane_quadrics>
@@ -182,17 +190,120 @@ void genmesh_row(benchmark::State& state, Input in, double ratio, bool guard = t
                  genmesh::Schedule schedule = genmesh::Schedule::queue) {
   run_case(
       state, in,
-      [&] {
-        G g;
-        genmesh::build_mesh(soup(in), g, {.check = false});
-        return g;
-      },
+      [&] { return input_mesh<G>(in); },
       [&](G& g) {
         genmesh::simplify(g, genmesh::Simplification_options<Policy>{.target_faces = target_faces(in, ratio),
                                                                       .prevent_self_intersections = guard,
                                                                       .schedule = schedule});
       },
       [](const G& g) { return std::pair{genmesh::to_soup(g), genmesh::check_mesh(g).ok()}; });
+}
+
+// The floor of issue 12's speed goal: what any simplifier that makes genmesh's
+// collapses on a valid halfedge mesh must do at least. The collapses of
+// genmesh_Halfedge_mesh_passes_no_guard (the survivor, the vertex that goes,
+// the new point) are recorded once, outside the timing, then replayed on a
+// fresh copy of the input:
+//   floor_replay_collapse: per collapse, find the edge, test it
+//     (can_collapse_edge: the link condition and the face checks every valid
+//     halfedge collapse needs), collapse it, move the survivor;
+//   floor_replay_quadrics: the same, plus the least Garland–Heckbert work:
+//     every vertex's plane quadric from its faces and every edge's optimal
+//     placement once before the first collapse, then per collapse the merged
+//     quadric and the placements of the survivor's edges (border planes left
+//     out: less work, still a lower bound).
+// No ordering (no heap, no sorted passes), no fold-over test, no
+// self-intersection guard: lower bounds on time, not simplifiers. Counter
+// same_as_simplify: 1 if the replay made simplify's mesh, bit for bit.
+struct Recorded_collapse {
+  genmesh::Vertex_index gone, survivor;
+  Eigen::Vector3d position;
+};
+
+struct Record_collapses : genmesh::Mutation_visitor {
+  std::vector<Recorded_collapse>* out;
+  void on_collapse_placement(const auto& h, const auto& position, double /*cost*/, const auto& g) {
+    out->push_back({source(h, g), target(h, g), position});
+  }
+};
+
+struct Recording {
+  std::vector<Recorded_collapse> steps;
+  genmesh::Polygon_soup result; // simplify's, which the replay must give too
+};
+
+const Recording& recorded_collapses(Input in, double ratio) {
+  static std::map<std::pair<Input, double>, Recording> cache;
+  auto [it, fresh] = cache.try_emplace({in, ratio});
+  if (fresh) {
+    Halfedge_mesh g = input_mesh<Halfedge_mesh>(in);
+    genmesh::simplify(g,
+                      genmesh::Simplification_options<>{.target_faces = target_faces(in, ratio),
+                                                        .prevent_self_intersections = false,
+                                                        .schedule = genmesh::Schedule::passes},
+                      Record_collapses{.out = &it->second.steps});
+    it->second.result = genmesh::to_soup(g);
+  }
+  return it->second;
+}
+
+void floor_row(benchmark::State& state, Input in, double ratio, bool quadrics) {
+  const Recording& recording = recorded_collapses(in, ratio);
+  run_case(
+      state, in,
+      [&] { return input_mesh<Halfedge_mesh>(in); },
+      [&](Halfedge_mesh& g) {
+        auto point = get(genmesh::vertex_point, g);
+        const genmesh::Plane_quadrics policy;
+        std::vector<genmesh::Quadric> q;
+        double sum = 0; // the placements' costs, so that none is optimized away
+        auto place_edges_of = [&](genmesh::Vertex_index v) {
+          const auto start = halfedge(v, g);
+          auto x = start;
+          do {
+            const auto w = source(x, g);
+            sum += policy.place(q[v.idx()] + q[w.idx()], get(point, v), get(point, w)).cost;
+            x = opposite(next(x, g), g);
+          } while (x != start);
+        };
+        if (quadrics) {
+          q.assign(num_vertices(g), {});
+          for (const auto f : faces(g)) {
+            const auto h0 = halfedge(f, g), h1 = next(h0, g), h2 = next(h1, g);
+            const auto a = target(h0, g), b = target(h1, g), c = target(h2, g);
+            const genmesh::Quadric fq = policy.face(get(point, a), get(point, b), get(point, c));
+            q[a.idx()] += fq;
+            q[b.idx()] += fq;
+            q[c.idx()] += fq;
+          }
+          for (const auto e : edges(g)) {
+            const auto h = halfedge(e, g);
+            const auto a = source(h, g), b = target(h, g);
+            sum += policy.place(q[a.idx()] + q[b.idx()], get(point, a), get(point, b)).cost;
+          }
+        }
+        for (const auto& s : recording.steps) {
+          const auto [h, found] = halfedge(s.gone, s.survivor, g);
+          const auto e = edge(h, g);
+          if (!found || !genmesh::can_collapse_edge(e, std::as_const(g))) {
+            state.SkipWithError("a recorded collapse was refused on replay");
+            return;
+          }
+          genmesh::collapse_edge(e, g);
+          put(point, s.survivor, s.position);
+          if (quadrics) {
+            q[s.survivor.idx()] += q[s.gone.idx()];
+            place_edges_of(s.survivor);
+          }
+        }
+        benchmark::DoNotOptimize(sum);
+      },
+      [&](const Halfedge_mesh& g) {
+        // same_as_simplify: 1 if the replay made simplify's mesh, bit for bit.
+        auto out = genmesh::to_soup(g);
+        state.counters["same_as_simplify"] = out == recording.result ? 1 : 0;
+        return std::pair{std::move(out), genmesh::check_mesh(g).ok()};
+      });
 }
 
 // CGAL's edge_collapse stops on an edge count; on these meshes the face
@@ -334,6 +445,9 @@ void register_all() {
         [=](benchmark::State& s) { genmesh_row<Halfedge_mesh>(s, in, r, false, genmesh::Schedule::passes); });
     reg("genmesh_Surface_mesh_passes",
         [=](benchmark::State& s) { genmesh_row<Surface_mesh>(s, in, r, true, genmesh::Schedule::passes); });
+    // Lower bounds on time for the collapses above (see floor_row).
+    reg("genmesh_floor_replay_collapse", [=](benchmark::State& s) { floor_row(s, in, r, false); });
+    reg("genmesh_floor_replay_quadrics", [=](benchmark::State& s) { floor_row(s, in, r, true); });
     reg("genmesh_Halfedge_mesh_Lindstrom_Turk",
         [=](benchmark::State& s) { genmesh_row<Halfedge_mesh, genmesh::Lindstrom_turk>(s, in, r); });
     reg("CGAL_GH_plane", [=](benchmark::State& s) {
