@@ -297,6 +297,20 @@ public:
   /// For internal drivers (self-intersection): the triangles in leaf order.
   /// Each entry: points, face and corners of triangle i.
   std::size_t triangle_count() const { return tris_.size(); }
+  /// A hint that a query will soon start at triangle t (a leaf-order
+  /// index, as closest_point_from's start): loads its corners into the
+  /// cache ahead of time. t out of range: nothing.
+  void prefetch_triangle(std::size_t t) const {
+#if defined(__GNUC__)
+    if (t < tris_.size()) {
+      const char* p = reinterpret_cast<const char*>(&tris_[t]);
+      __builtin_prefetch(p);
+      __builtin_prefetch(p + sizeof(Tri) - 1);
+    }
+#else
+    (void)t;
+#endif
+  }
   const std::array<Eigen::Vector3d, 3>& triangle_points(std::size_t i) const { return tris_[i].p; }
   Face triangle_face(std::size_t i) const { return info_[i].face; }
   const std::array<Vertex, 3>& triangle_corners(std::size_t i) const { return info_[i].corners; }

@@ -119,6 +119,9 @@ public:
     return answer(q, tree_->closest_point(q), triangle, value);
   }
 
+  /// A hint that project() will soon be called with this triangle.
+  void prefetch(std::size_t triangle) const { tree_->prefetch_triangle(triangle); }
+
   /// No previous triangle.
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 

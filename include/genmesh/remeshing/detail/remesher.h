@@ -155,14 +155,15 @@ public:
       H h;
       bool operator<(const Entry& o) const { return len2 < o.len2 || (len2 == o.len2 && idx > o.idx); }
     };
-    std::priority_queue<Entry> heap;
     double budget = 64;
+    std::vector<Entry> first; // heapified at once, as in collapse_short_edges
     for (auto e : edges(g_)) {
       const H h = halfedge(e, g_);
       const double l2 = len2(h);
       budget += 4 + 4 * std::ceil(std::sqrt(l2) / min_length_bound());
-      if (splittable(h) && l2 > hi2(h)) heap.push({l2, eid(h), canonical(h)});
+      if (splittable(h) && l2 > hi2(h)) first.push_back({l2, eid(h), canonical(h)});
     }
+    std::priority_queue<Entry> heap(std::less<Entry>(), std::move(first));
     std::size_t n = 0;
     while (!heap.empty() && static_cast<double>(n) < budget) {
       const Entry top = heap.top();
@@ -219,13 +220,17 @@ public:
     };
     grow();
     std::vector<std::uint32_t> stamp(eflag_.size(), 0);
-    std::priority_queue<Entry> heap;
+    // The short edges heapified at once (linear; pushed one by one they took
+    // n log n): the pop order is the same, (length, index) being unique
+    // among the live entries.
+    std::vector<Entry> first;
     for (auto e : edges(g_)) {
       const H h = halfedge(e, g_);
       if (eflag(h) & e_fixed) continue;
       const double l2 = len2(h);
-      if (l2 < lo2(h)) heap.push({l2, eid(h), 0, h});
+      if (l2 < lo2(h)) first.push_back({l2, eid(h), 0, h});
     }
+    std::priority_queue<Entry> heap(std::less<Entry>(), std::move(first));
     std::size_t n = 0;
     while (!heap.empty()) {
       const Entry top = heap.top();
@@ -602,14 +607,15 @@ public:
     }
     std::vector<std::uint32_t> free_id, offset{0}, ring;
     free_id.reserve(order.size()), offset.reserve(order.size() + 1), ring.reserve(7 * order.size());
-    for (std::size_t i = 0; i < order.size(); ++i) {
-      const V v = order[i];
-      if (vflag_at(v) & (v_constrained | v_fixed)) continue;
-      free_id.push_back(static_cast<std::uint32_t>(i));
+    for (std::size_t i = 0; i < order.size(); ++i)
+      if (!(vflag_at(order[i]) & (v_constrained | v_fixed))) free_id.push_back(static_cast<std::uint32_t>(i));
+    for (std::size_t i = 0; i < free_id.size(); i += ring_batch) {
+      const std::size_t n = std::min(ring_batch, free_id.size() - i);
+      V batch[ring_batch];
+      for (std::size_t b = 0; b < n; ++b) batch[b] = order[free_id[i + b]];
       const std::size_t first = ring.size();
-      append_ring(v, ring);
+      append_rings(std::span<const V>(batch, n), ring, offset);
       for (std::size_t j = first; j < ring.size(); ++j) ring[j] = local[ring[j]];
-      offset.push_back(static_cast<std::uint32_t>(ring.size()));
     }
     std::vector<Eigen::Vector3d> moved(free_id.size());
     const double lambda = o_.smoothing_step_size;
@@ -626,7 +632,18 @@ public:
         if (moved[i].allFinite()) pos[free_id[i]] = moved[i];
     }
     if (and_project) {
+      // The queries' start triangles and states a few vertices ahead: they
+      // follow the tree's leaf order, the states are scattered by vertex
+      // index.
+      constexpr std::size_t ahead = 8;
       for (std::size_t i = 0; i < order.size(); ++i) {
+        if (i + ahead < order.size()) {
+          const std::uint32_t w = vid(order[i + ahead]);
+          ref_->prefetch(on_triangle_[w]);
+#if defined(__GNUC__)
+          __builtin_prefetch(&on_[w]);
+#endif
+        }
         const V v = order[i];
         if (vflag_at(v) & v_fixed) continue;
         const Eigen::Vector3d p = to_eigen(from_eigen<point_t<G>>(pos[i])); // as the mesh stores it
@@ -891,16 +908,54 @@ private:
     for (std::size_t i = 0; i < k; ++i) f(ring[(first + i) % k]);
   }
 
-  /// Appends the vertex numbers of v's neighbours (the sources of the
-  /// halfedges into v) in for_each_in's order, without a ring of halfedges:
-  /// walked once, then rotated to the canonical start.
-  void append_ring(V v, std::vector<std::uint32_t>& out) const {
-    // Into a local array first: one append per ring (a push_back per
-    // neighbour was 2 % of remeshing's instructions, not inlined).
-    boost::container::small_vector<std::uint32_t, 16> r;
-    const std::size_t first = walk_ring(v, [&](H x) { r.push_back(vid(source(x, g_))); });
-    out.insert(out.end(), r.begin() + static_cast<std::ptrdiff_t>(first), r.end());
-    out.insert(out.end(), r.begin(), r.begin() + static_cast<std::ptrdiff_t>(first));
+  /// How many rings append_rings walks side by side.
+  static constexpr std::size_t ring_batch = 8;
+
+  /// Appends, for each v of vs (at most ring_batch), the vertex numbers of
+  /// v's neighbours (the sources of the halfedges into v) in for_each_in's
+  /// order, then out.size() onto offsets. The rings are walked side
+  /// by side, a step of each in turn: a walk is a chain of dependent loads
+  /// (next, then opposite's next, …) that misses the cache where vertex and
+  /// halfedge indices are scattered, and the chains of different vertices
+  /// overlap (one ring at a time, this was ~5 % of remeshing's time on
+  /// armadillo; docs/benchmarks.md, session 9).
+  void append_rings(std::span<const V> vs, std::vector<std::uint32_t>& out,
+                    std::vector<std::uint32_t>& offsets) const {
+    Ring rings[ring_batch];
+    H start[ring_batch], at[ring_batch];
+    std::size_t live = 0;
+    for (std::size_t b = 0; b < vs.size(); ++b) {
+      start[b] = at[b] = halfedge(vs[b], g_);
+      if (start[b] != null_h()) ++live;
+    }
+    while (live != 0) {
+      for (std::size_t b = 0; b < vs.size(); ++b) {
+        if (at[b] == null_h()) continue;
+        rings[b].push_back(at[b]);
+        at[b] = opposite(next(at[b], g_), g_);
+        if (at[b] == start[b]) at[b] = null_h(), --live;
+      }
+    }
+    for (std::size_t b = 0; b < vs.size(); ++b) {
+      const Ring& r = rings[b];
+      const std::size_t first = canonical_first(r), k = r.size(), base = out.size();
+      // One resize per ring (a push_back per neighbour was 2 % of
+      // remeshing's instructions, not inlined).
+      out.resize(base + k);
+      for (std::size_t j = 0; j < k; ++j) out[base + j] = vid(source(r[(first + j) % k], g_));
+      offsets.push_back(static_cast<std::uint32_t>(out.size()));
+    }
+  }
+
+  /// walk_ring's canonical start among the halfedges of a ring in walk order.
+  std::size_t canonical_first(const Ring& r) const {
+    std::size_t first = 0;
+    std::uint32_t lowest = k_none;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      if (is_border(r[i])) return i;
+      if (const std::uint32_t e = eid(r[i]); e < lowest) lowest = e, first = i;
+    }
+    return first;
   }
 
   /// Calls f(x) for every halfedge x into v, from halfedge(v); returns the
