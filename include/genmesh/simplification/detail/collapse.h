@@ -5,8 +5,8 @@
 // the vertex's point, Relative_quadric; nothing for a memoryless policy),
 // locked / on-a-feature-line flags
 // and a "has a refused edge" hint; per edge: the descriptor, refused and
-// feature flags; per face (with the self-intersection guard): its box
-// (float) and corners, in a spatial hash. Collapse never adds elements, so
+// feature flags; per face (with the self-intersection guard): its corners,
+// in a spatial hash. Collapse never adds elements, so
 // these are vectors sized once by the index bounds. Points are read from the
 // mesh's own array where it has one (HasNativePointArray: genmesh's meshes,
 // Surface_mesh), else from a copy in double.
@@ -17,18 +17,21 @@
 // flip, degenerate or fall below .min_angle, if the survivor would exceed
 // .max_valence, if can_collapse_edge says no (link condition), or if a new
 // face would meet another face (exact test against the faces a spatial hash
-// finds near the new ones); else drop the edges of its triangles from the
-// queue, collapse_edge (the user's visitor rides along; the survivor's point
-// is written as it moves), merge the policy data into the survivor, and
+// finds near the new ones, but those the ring certificate clears); else drop
+// the edges of its triangles from the queue, collapse_edge (the user's
+// visitor rides along; the survivor's point is written as it moves), merge
+// the policy data into the survivor, and
 // requeue every edge of the survivor, plus the refused edges of its
 // neighbours (their fold-over test depends on the survivor's point) — for a
 // memoryless policy every edge at a neighbour of the survivor (their
 // profiles hold its faces). With Schedule::passes there is no queue: see
 // run_passes.
 #pragma once
+#ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
+#include <stdexcept>
+#endif
 
 #include <genmesh/concepts.h>
-#include <genmesh/detail/geometry/morton.h>
 #include <genmesh/detail/geometry/predicates.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/features.h>
@@ -338,19 +341,23 @@ class Collapser {
     on_line_.assign(vb, 0);
     init_features(eb);
     if (o_.prevent_self_intersections) {
-      // Slots by face index first (build_grid lays them out in Morton order).
+      // Slots by face index.
       const std::size_t fb = index_bound(face_index, g_);
       slot_.assign(fb, Face_slot{});
-      slot_of_.assign(fb, no_slot);
-      if (const Eigen::AlignedBox3d box = points_box(); !box.isEmpty())
-        quantize_ = Quantizer::over(box.min(), box.max());
+      vflags_.assign(vb, 0);
+      for (const E e : edges(g_)) {
+        const H h = halfedge(e, g_);
+        if (border(h) || border(opposite(h, g_))) {
+          vflags_[vi(source(h, g_))] = on_border;
+          vflags_[vi(target(h, g_))] = on_border;
+        }
+      }
       for (const F f : faces(g_)) {
         const H h0 = halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
         const std::array<std::uint32_t, 3> id{static_cast<std::uint32_t>(vi(target(h0, g_))),
                                               static_cast<std::uint32_t>(vi(target(h1, g_))),
                                               static_cast<std::uint32_t>(vi(target(h2, g_)))};
-        slot_of_[fi(f)] = static_cast<std::uint32_t>(fi(f));
-        slot_[fi(f)].set(quantize_(Box::of(pos_[id[0]], pos_[id[1]], pos_[id[2]])), id);
+        slot_[fi(f)].set(id);
       }
       build_grid();
     }
@@ -382,7 +389,6 @@ class Collapser {
                          std::size_t faces0, std::size_t total) {
     touched_.assign(pos_.size(), 0);
     ecost_.assign(index_bound(edge_index, g_), Cost_mark::dirty);
-    cand_.reserve(ecost_.size()); // no growth copies: the run's largest array
     // With a memoryless policy an edge's cost reads the faces at its ends'
     // neighbours; with feature lines a collapse reclassifies the apexes.
     const bool rings = memoryless || features_;
@@ -391,9 +397,11 @@ class Collapser {
       if (has_target && faces_ <= target_faces) return Stop_reason::target_faces;
       // Costs: computed again where a collapse of the last pass touched an
       // end (or the edge is new to its ends); kept otherwise, bit for bit.
-      cand_.clear();
+      // Counted by the high half of their bits on the way, for the limit.
       bool above = false;
       Placement pl;
+      std::size_t n = 0;
+      high_.assign(std::size_t{1} << 16, 0);
       for (const E e : edges(g_)) {
         const std::size_t k = ei(e);
         float& c = ecost_[k];
@@ -403,20 +411,51 @@ class Collapser {
           else if (std::sqrt(pl.cost) > max_error) c = Cost_mark::above;
           else c = pl.cost > 0 ? static_cast<float>(pl.cost) : 0.0f; // ≥ 0: its bits order as integers
         }
-        if (c >= 0) cand_.push_back((std::uint64_t{std::bit_cast<std::uint32_t>(c)} << 32) | k);
-        else above |= c == Cost_mark::above;
-      }
-      if (cand_.empty()) return above ? Stop_reason::max_error : Stop_reason::no_collapse_left;
-      auto end = cand_.end();
-      if (has_target && !unlimited) {
-        const std::size_t goal = (faces_ - target_faces) / 8 + 1; // a quarter of the collapses still needed
-        if (goal < cand_.size()) {
-          std::nth_element(cand_.begin(), cand_.begin() + static_cast<std::ptrdiff_t>(goal), cand_.end());
-          const float at = std::bit_cast<float>(static_cast<std::uint32_t>(cand_[goal] >> 32));
-          const std::uint64_t limit = std::uint64_t{std::bit_cast<std::uint32_t>(1.5f * at)} << 32 | 0xffffffffu;
-          end = std::partition(cand_.begin(), cand_.end(), [&](std::uint64_t x) { return x <= limit; });
+        if (c >= 0) {
+          ++n;
+          ++high_[std::bit_cast<std::uint32_t>(c) >> 16];
+        } else {
+          above |= c == Cost_mark::above;
         }
       }
+      if (n == 0) return above ? Stop_reason::max_error : Stop_reason::no_collapse_left;
+      // The limit: 1.5x the cost of rank `goal` (the same float a sort of
+      // all candidates would put there), found by the high and then the low
+      // half of its bits; only the candidates up to it are listed, so that
+      // the list holds a pass's worth of edges, not every edge (8 bytes an
+      // edge: 10 MB at 832k faces, the run's largest array).
+      std::uint32_t limit = ~std::uint32_t{0};
+      std::size_t listed = n;
+      if (has_target && !unlimited) {
+        const std::size_t goal = (faces_ - target_faces) / 8 + 1; // a quarter of the collapses still needed
+        if (goal < n) {
+          std::size_t below = 0;
+          std::uint32_t hi = 0;
+          while (below + high_[hi] <= goal) below += high_[hi++];
+          // (By index: an edge that is gone is dirty, < 0.)
+          low_.assign(std::size_t{1} << 16, 0);
+          for (const float c : ecost_)
+            if (c >= 0 && std::bit_cast<std::uint32_t>(c) >> 16 == hi) ++low_[std::bit_cast<std::uint32_t>(c) & 0xffffu];
+          std::size_t rank = goal - below;
+          std::uint32_t lo = 0;
+          while (low_[lo] <= rank) rank -= low_[lo++];
+          const float at = std::bit_cast<float>(hi << 16 | lo);
+          limit = std::bit_cast<std::uint32_t>(1.5f * at);
+          listed = 0;
+          for (std::uint32_t b = 0; b <= (limit >> 16); ++b) listed += high_[b]; // at least those up to limit
+        }
+      }
+      cand_.clear();
+      cand_.reserve(listed);
+      // By index (the sort below orders them): every edge a collapse
+      // removes was marked dirty then.
+      for (std::size_t k = 0; k < ecost_.size(); ++k) {
+        const float c = ecost_[k];
+        if (c >= 0 && std::bit_cast<std::uint32_t>(c) <= limit)
+          cand_.push_back((std::uint64_t{std::bit_cast<std::uint32_t>(c)} << 32) | k);
+      }
+      const auto end = cand_.end();
+      const bool cut = cand_.size() < n; // some candidates wait beyond the limit
       std::sort(cand_.begin(), end);
       order_ties(cand_.begin(), end);
       std::fill(touched_.begin(), touched_.end(), std::uint8_t{0});
@@ -444,7 +483,7 @@ class Collapser {
         if ((r.collapses & 16383u) == 0) vis_.on_step("faces", std::min(faces0 - faces_, total - 1), total);
       }
       if (done == 0) {
-        if (unlimited || end == cand_.end()) return above ? Stop_reason::max_error : Stop_reason::no_collapse_left;
+        if (unlimited || !cut) return above ? Stop_reason::max_error : Stop_reason::no_collapse_left;
         unlimited = true; // the edges below the limit are all refused: try the rest
       } else {
         unlimited = false;
@@ -712,93 +751,33 @@ class Collapser {
     return n > 0 ? sum / static_cast<double>(n) : 0.0;
   }
 
-  // Every live face in the grid, with cells four times the mean edge length
+  // Every live face in the grid, with cells six times the mean edge length
   // (208k armadillo → 10%, guard time: 1x 2.9 s, 2x 2.2 s, 3x-4x 1.7 s, 8x
-  // 1.9 s: fewer lookups and re-insertions outweigh longer lists).
-  // The live faces' slots are laid out in Morton order of their boxes'
-  // centres (cells of the grid), so that the faces of a cell sit together
-  // in memory: a query reads a few runs of slots instead of scattered ones.
-  // Read from the slots alone (their corners are current), not the mesh;
-  // the slots are compacted and permuted in place (a copy of them was the
-  // largest transient of the run). Which face a slot holds is known only
-  // here, from slot_of_ over the live faces (kept, it cost 4 bytes a face
-  // for the whole run).
+  // 1.9 s with the search of session 7; with the ring certificate, 832k → 10%:
+  // 6x as fast as 4x and 3-4 MB less, 8x 1 MB less again but no faster).
+  // Slots are by face index, read from the slots alone (their corners are
+  // current), not the mesh. (Until session 9 they were laid out in Morton
+  // order, with a face → slot map; with the certificate the faces a search
+  // reads are mostly its own ring, and the input's order served as well
+  // without the map's 4 bytes a face: see docs/benchmarks.md.)
   void build_grid() {
     grid_.reset(1.0, 0); // frees the old cells first
-    std::vector<std::uint32_t> face_of(slot_.size(), no_slot); // by slot
-    for (const F f : faces(g_)) face_of[slot_of_[fi(f)]] = static_cast<std::uint32_t>(fi(f));
-    std::size_t live = 0;
-    for (std::size_t s = 0; s < slot_.size(); ++s) {
-      if (!slot_[s].alive()) continue;
-      slot_[live] = slot_[s];
-      face_of[live++] = face_of[s];
-    }
-    slot_.resize(live);
-    face_of.resize(live);
     double sum = 0;
     std::size_t n = 0;
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
     for (std::size_t s = 0; s < slot_.size(); ++s) {
+      if (!slot_[s].alive()) continue;
       const auto t = slot_triangle(s);
       sum += (t.p[1] - t.p[0]).norm() + (t.p[2] - t.p[1]).norm() + (t.p[0] - t.p[2]).norm();
       n += 3;
-      lo = lo.cwiseMin(t.p[0]).cwiseMin(t.p[1]).cwiseMin(t.p[2]);
     }
     const double m = n > 0 ? sum / static_cast<double>(n) : 0.0;
-    const double cell = m > 0 ? 4.0 * m : 1.0;
-    grid_.reset(cell, slot_.size());
-    // Morton code (10 bits an axis, in cells) << 32 | slot: one integer
-    // sort.
-    std::vector<std::uint64_t> order;
-    order.reserve(slot_.size());
+    grid_.reset(m > 0 ? 6.0 * m : 1.0, slot_.size());
     for (std::size_t s = 0; s < slot_.size(); ++s) {
-      const auto t = slot_triangle(s);
-      const Eigen::Vector3d c = ((t.p[0] + t.p[1] + t.p[2]) / 3.0 - lo) / cell;
-      order.push_back(morton(c) << 32 | s);
-    }
-    {
-      // By the code alone, stably: ties stay in slot order, as a sort of the
-      // whole key would leave them (a tenth of std::sort's instructions).
-      std::vector<std::uint64_t> tmp;
-      genmesh::detail::radix_sort(order, tmp, 32, 30, [](std::uint64_t k) { return k; });
-    }
-    constexpr std::uint64_t low = 0xffffffffu;
-    // Slot s takes the slot order[s] had: follow each cycle of the
-    // permutation, marking placed slots by order[s]'s low half = s.
-    for (std::size_t s = 0; s < order.size(); ++s) {
-      if ((order[s] & low) == s) continue;
-      const Face_slot first = slot_[s];
-      const std::uint32_t first_face = face_of[s];
-      std::size_t j = s;
-      for (;;) {
-        const std::size_t k = order[j] & low;
-        order[j] = (order[j] & ~low) | j;
-        if (k == s) {
-          slot_[j] = first;
-          face_of[j] = first_face;
-          break;
-        }
-        slot_[j] = slot_[k];
-        face_of[j] = face_of[k];
-        j = k;
-      }
-    }
-    std::vector<std::uint64_t>().swap(order);
-    for (std::size_t s = 0; s < slot_.size(); ++s) slot_of_[face_of[s]] = static_cast<std::uint32_t>(s);
-    std::vector<std::uint32_t>().swap(face_of);
-    for (std::size_t s = 0; s < slot_.size(); ++s) {
+      if (!slot_[s].alive()) continue;
       const auto t = slot_triangle(s);
       grid_.insert(static_cast<std::uint32_t>(s), Box::of(t.p[0], t.p[1], t.p[2]));
     }
     grid_faces_ = faces_;
-  }
-
-  // The Morton code of a point in cell units (10 bits an axis, clamped).
-  static std::uint64_t morton(const Eigen::Vector3d& c) {
-    auto spread = [](double x) {
-      return genmesh::detail::morton_spread(static_cast<std::uint64_t>(std::clamp(x, 0.0, double((1u << 10) - 1))));
-    };
-    return spread(c.x()) | spread(c.y()) << 1 | spread(c.z()) << 2;
   }
 
   // After a collapse onto q: q's faces go into the grid with their new
@@ -813,13 +792,12 @@ class Collapser {
       if (!border(x)) {
         // x: s → q, next(x): q → w; the face is (s, q, w) (its corners from
         // the walk, not from halfedge(f): one miss less a face).
-        const std::size_t sf = slot_of_[fi(face(x, g_))];
+        const std::size_t sf = fi(face(x, g_));
         const std::uint32_t is = static_cast<std::uint32_t>(vi(source(x, g_))),
                             iq = static_cast<std::uint32_t>(vi(q)),
                             iw = static_cast<std::uint32_t>(vi(target(next(x, g_), g_)));
-        const Box b = Box::of(pos_[is], pos_[iq], pos_[iw]);
-        slot_[sf].set(quantize_(b), {is, iq, iw});
-        if (!rebuild) grid_.insert(static_cast<std::uint32_t>(sf), b);
+        slot_[sf].set({is, iq, iw});
+        if (!rebuild) grid_.insert(static_cast<std::uint32_t>(sf), Box::of(pos_[is], pos_[iq], pos_[iw]));
       }
       x = opposite(next(x, g_), g_);
     } while (x != start);
@@ -928,6 +906,140 @@ class Collapser {
     }
   }
 
+  // The ring certificate (exact). U: the new faces (fresh_, around x) and
+  // every other live face with a corner in the link (ring_ past p and q),
+  // as the mesh will be after the collapse. Does the projection along one
+  // axis take U one-to-one into the plane, so that no two faces of U meet
+  // beyond what they share? Then only the faces with no corner in ring_
+  // need testing; they are left in near_. The caller has checked that p, q
+  // and the link are off the border. U's faces other than the new ones are
+  // all in near_: each holds a link vertex, a corner of a new face, so its
+  // box meets the new faces' union, which the grid query never misses.
+  // Checked: (1) every face of U has a strictly positive orientation in the
+  // projection (orient2d, exact; the axis is the largest component of the
+  // new faces' normal sum, its two others swapped if that is negative);
+  // (2) every edge of ∂U, the 1-chain boundary of U, has a strictly
+  // positive orientation seen from x, and (3) ∂U crosses the ray from x
+  // along the first projected axis exactly once (upwards; a positive edge
+  // can cross it no other way).
+  // Why that suffices: by (1), for a point y on no projected edge, the
+  // number of faces of U whose projection holds y is the winding number of
+  // ∂U's projection around y (each positive triangle adds one where it
+  // covers y; their boundaries sum to ∂U). ∂U is a sum of closed loops;
+  // along each, by (2), the angle around x grows strictly, so each winds at
+  // least once around x; by (3), the sum winds once: ∂U is one loop, and
+  // meets every ray from x once — a simple closed curve, whose winding
+  // number is 0 or 1 everywhere. So the projected faces of U have disjoint
+  // interiors. Then an edge e of U with a corner in the link or x (both of
+  // its faces are in U) has its two faces on either side of it: a small
+  // disc around a point inside e is covered by them, and any other face
+  // through that point would overlap them. Likewise the star of a link
+  // vertex or x (all in U) covers a disc around its point exactly once. A
+  // new face t has only such corners and edges, so the projection of any
+  // other face u of U meets t's only on edges and corners they share; a
+  // common point P of t and u projects onto one, Q, of a shared edge or
+  // corner, which lies in t; t projects one-to-one (1), so P = Q: t and u
+  // meet in what they share. Which edges form ∂U: an edge with a corner w
+  // in the link or x has both faces in U (they hold w; no border there), so
+  // it cancels; an edge ab with no such corner lies in a face (a, b, w) of U
+  // with w in the link (a new face has its corners there), and cancels iff
+  // its twin (b, a, z) has z in the link — then both appear: the boundary
+  // edges are the edges b → a of the faces with one corner w in the link
+  // and its two others not (nor p, q), minus the pairs that come both ways.
+  bool ring_projects_one_to_one(const Eigen::Vector3d& x) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const Fresh_plane& pl : fresh_plane_) sum += pl.n;
+    const Eigen::Vector3d m = sum.cwiseAbs();
+    const int axis = m.x() >= m.y() && m.x() >= m.z() ? 0 : m.y() >= m.z() ? 1 : 2;
+    if (m[axis] == 0) return false;
+    const bool swap = sum[axis] < 0;
+    auto at = [axis, swap](const Eigen::Vector3d& p) {
+      auto a = project2(p, axis);
+      if (swap) std::swap(a[0], a[1]);
+      return a;
+    };
+    const auto px = at(x);
+    for (const auto& t : fresh_)
+      if (!positive(at(t.p[0]), px, at(t.p[2]))) return false;
+    // Marks: p and q (star), the link (link); cleared before returning.
+    for (std::size_t k = 0; k < ring_.size(); ++k) vflags_[ring_[k]] |= k < 2 ? star : link;
+    const bool ok = classify_near(at);
+    for (const std::uint32_t v : ring_) vflags_[v] &= static_cast<std::uint8_t>(~(star | link));
+    if (!ok) return false;
+    int crossings = 0;
+    for (const std::uint64_t e : ring_edges_) {
+      const auto a = at(pos_[e >> 32]), b = at(pos_[e & 0xffffffffu]);
+      if (!positive(px, a, b)) return false;
+      crossings += a[1] < px[1] && px[1] <= b[1];
+    }
+    return crossings == 1;
+  }
+
+#ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
+  // For the tests: what ring_projects_one_to_one proved, checked by the
+  // exact test — the new faces pairwise, and against every face the query
+  // found but those around p or q.
+  void verify_certificate(const std::vector<std::uint32_t>& found, std::uint32_t ip, std::uint32_t iq) const {
+    for (std::size_t i = 0; i < fresh_.size(); ++i)
+      for (std::size_t j = i + 1; j < fresh_.size(); ++j)
+        if (faces_intersect(fresh_[i], fresh_[j]))
+          throw std::logic_error("simplify: the ring certificate accepted two new faces that meet");
+    for (const std::uint32_t f : found) {
+      if (!slot_[f].alive()) continue;
+      const auto u = slot_triangle(f);
+      if (std::find(u.id.begin(), u.id.end(), ip) != u.id.end() || std::find(u.id.begin(), u.id.end(), iq) != u.id.end())
+        continue;
+      bool in_ring = false;
+      for (const std::uint32_t v : u.id) in_ring |= std::find(ring_.begin() + 2, ring_.end(), v) != ring_.end();
+      if (!in_ring) continue; // tested as a foreign face
+      for (const auto& t : fresh_)
+        if (faces_intersect(t, u))
+          throw std::logic_error("simplify: the ring certificate accepted a new face that meets a ring face");
+    }
+  }
+#endif
+
+  // Is orient2d(a, b, c) positive? (Exact: the floating filter, else
+  // Shewchuk's adaptive test.)
+  static bool positive(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                       const std::array<double, 2>& c) {
+    const int s = sure_orient2d(a, b, c);
+    return (s == unsure ? detail::pred::orient2d(a[0], a[1], b[0], b[1], c[0], c[1]) : s) > 0;
+  }
+
+  // ring_projects_one_to_one's pass over near_ (p, q and the link marked):
+  // the faces with no marked corner go to foreign_; the others, but p's and
+  // q's, must project positively (`at`), and give ∂U's edges.
+  template <class At>
+  bool classify_near(const At& at) {
+    ring_edges_.clear();
+    foreign_.clear();
+    for (const std::uint32_t f : near_) {
+      const Face_slot& sl = slot_[f];
+      if (!sl.alive()) continue;
+      const std::uint8_t m0 = vflags_[sl.v[0]], m1 = vflags_[sl.v[1]], m2 = vflags_[sl.v[2]];
+      if ((m0 | m1 | m2) & star) continue; // around p or q: goes
+      const unsigned l = (m0 & link ? 1u : 0u) | (m1 & link ? 2u : 0u) | (m2 & link ? 4u : 0u);
+      if (l == 0) {
+        foreign_.push_back(f);
+        continue;
+      }
+      if (!positive(at(pos_[sl.v[0]]), at(pos_[sl.v[1]]), at(pos_[sl.v[2]]))) return false;
+      if (std::popcount(l) > 1) continue;
+      // The edge opposite the link corner, unless its twin came already.
+      const int w = std::countr_zero(l);
+      const std::uint64_t from = sl.v[(w + 1) % 3], to = sl.v[(w + 2) % 3];
+      const auto twin = std::find(ring_edges_.begin(), ring_edges_.end(), to << 32 | from);
+      if (twin != ring_edges_.end()) {
+        *twin = ring_edges_.back();
+        ring_edges_.pop_back();
+      } else {
+        ring_edges_.push_back(from << 32 | to);
+      }
+    }
+    return true;
+  }
+
   // Would the faces the collapse of edge(h) into target(h) at x makes meet
   // any other face, or each other, beyond what they share? (Exact.)
   bool stays_embedded(H h, const Eigen::Vector3d& x) {
@@ -937,28 +1049,33 @@ class Collapser {
     // The faces around p and q but the two of the edge: the new ones, their
     // corners from the walk (no slot read: p's and q's neighbourhoods are in
     // cache from the fold-over test).
+    // The link (p and q's neighbours but p and q, each once) is gathered on
+    // the way for ring_projects_one_to_one.
     fresh_.clear();
+    ring_.assign({ip, iq});
+    bool border_star = false;
     for (const V v : {source(h, g_), target(h, g_)}) {
       const H start = halfedge(v, g_);
       H y = start;
       do {
-        if (!border(y)) {
-          // y: s → v, next(y): v → w; the face is (s, v, w).
-          const std::uint32_t is = static_cast<std::uint32_t>(vi(source(y, g_))),
-                              iw = static_cast<std::uint32_t>(vi(target(next(y, g_), g_)));
-          if (is != ip && is != iq && iw != ip && iw != iq) fresh_.push_back({{pos_[is], x, pos_[iw]}, {is, iq, iw}});
+        // y: s → v, next(y): v → w; the face is (s, v, w).
+        const std::uint32_t is = static_cast<std::uint32_t>(vi(source(y, g_)));
+        if (is != ip && is != iq && std::find(ring_.begin() + 2, ring_.end(), is) == ring_.end()) {
+          ring_.push_back(is);
         }
+        if (!border(y)) {
+          const std::uint32_t iw = static_cast<std::uint32_t>(vi(target(next(y, g_), g_)));
+          if (is != ip && is != iq && iw != ip && iw != iq) fresh_.push_back({{pos_[is], x, pos_[iw]}, {is, iq, iw}});
+        } else {
+          border_star = true;
+        }
+        if (border(opposite(y, g_))) border_star = true;
         y = opposite(next(y, g_), g_);
       } while (y != start);
     }
     if (fresh_.empty()) return true;
     fresh_plane_.resize(fresh_.size());
     for (std::size_t i = 0; i < fresh_.size(); ++i) fresh_plane_[i] = plane_of(fresh_[i]);
-    for (std::size_t i = 0; i < fresh_.size(); ++i)
-      for (std::size_t j = i + 1; j < fresh_.size(); ++j)
-        if (!off_plane(i, fresh_[j]) && !off_plane(j, fresh_[i]) && !in_projection_separated(i, fresh_[j]) &&
-            exact_test(fresh_[i], fresh_[j]))
-          return false;
     // Against the live faces near the new ones (one query for the union of
     // their boxes; a candidate is tested exactly against each new face whose
     // box its box meets; faces around p or q are skipped: their corners say
@@ -967,28 +1084,51 @@ class Collapser {
     Box all = Box::of(fresh_[0].p[0], fresh_[0].p[1], fresh_[0].p[2]);
     for (std::size_t i = 0; i < fresh_.size(); ++i) {
       const Box b = Box::of(fresh_[i].p[0], fresh_[i].p[1], fresh_[i].p[2]);
-      fresh_box_[i] = quantize_(b);
+      fresh_box_[i] = b;
       all.lo = all.lo.cwiseMin(b.lo);
       all.hi = all.hi.cwiseMax(b.hi);
     }
-    const Short_box all_q = quantize_(all);
-    // Two passes: the grid's entries pick the faces whose box may meet
-    // the new ones' (without reading them), their slots pick the candidates
-    // (asking for their corners' points as they go), then the tests read
-    // the points, whose cache misses have overlapped by then.
+    // The grid's entries pick the faces whose box may meet the new ones'
+    // (without reading them); the ring certificate (most searches) leaves
+    // those with no corner in the ring; their points give the candidates.
     near_.clear();
     grid_.query(all, near_);
-    candidates_.clear();
     {
-      // Nearly every slot read is a cache miss: ask for it a few faces ahead.
-      constexpr std::size_t ahead = 8;
-      const std::size_t n = near_.size();
-      for (std::size_t k = 0; k < std::min(ahead, n); ++k) prefetch(&slot_[near_[k]]);
-      for (std::size_t k = 0; k < n; ++k) {
-        if (k + ahead < n) prefetch(&slot_[near_[k + ahead]]);
-        pick_candidate(near_[k], ip, iq, all_q);
-      }
+      // Nearly every slot read is a cache miss: ask for them first.
+      for (const std::uint32_t f : near_) prefetch(&slot_[f]);
     }
+    // With the ring certified, the new faces meet each other and every face
+    // at a link vertex only in what they share: only the faces with no
+    // corner in ring_ (p, q and the link) are left to test.
+    bool certified = !border_star;
+    for (std::size_t k = 2; certified && k < ring_.size(); ++k) certified = !(vflags_[ring_[k]] & on_border);
+    certified = certified && ring_projects_one_to_one(x);
+    if (certified) {
+      near_.swap(foreign_);
+#ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
+      verify_certificate(foreign_, ip, iq); // the query's list, now in foreign_
+#endif
+    } else {
+      for (std::size_t i = 0; i < fresh_.size(); ++i)
+        for (std::size_t j = i + 1; j < fresh_.size(); ++j)
+          if (!off_plane(i, fresh_[j]) && !off_plane(j, fresh_[i]) && !in_projection_separated(i, fresh_[j]) &&
+              exact_test(fresh_[i], fresh_[j]))
+            return false;
+    }
+    // The faces not around p or q, their points asked for; then their
+    // boxes pick the candidates.
+    candidates_.clear();
+    std::size_t kept = 0;
+    for (const std::uint32_t f : near_) {
+      const Face_slot& sl = slot_[f];
+      if (!sl.alive() || sl.v[0] == ip || sl.v[1] == ip || sl.v[2] == ip || sl.v[0] == iq || sl.v[1] == iq ||
+          sl.v[2] == iq)
+        continue;
+      for (const std::uint32_t v : sl.v) prefetch(pos_.address(v));
+      near_[kept++] = f;
+    }
+    near_.resize(kept);
+    for (const std::uint32_t f : near_) pick_candidate(f, all);
     const std::size_t nf = fresh_.size();
     for (const auto& [f, mask] : candidates_) {
       const Mesh_triangle<std::uint32_t> u = slot_triangle(f);
@@ -999,7 +1139,8 @@ class Collapser {
       Eigen::Vector3d un;
       double uscale = 0;
       for (std::size_t i = 0; i < nf; ++i) {
-        if (!(i < 64 ? (mask >> i) & 1u : slot_[f].b.meets(fresh_box_[i])) || off_plane(i, u)) continue;
+        if (!(i < 64 ? (mask >> i) & 1u : Box::of(u.p[0], u.p[1], u.p[2]).overlaps(fresh_box_[i])) || off_plane(i, u))
+          continue;
         if (uscale == 0) {
           un = triangle_normal(u.p[0], u.p[1], u.p[2]);
           uscale = plane_scale(u);
@@ -1018,19 +1159,17 @@ class Collapser {
 #endif
   }
 
-  // Lists candidate face f with the new faces whose boxes its box meets
-  // (bit i: new face i; new faces from the 64th on are always tested),
-  // unless it is dead, around p or q, or meets none.
-  void pick_candidate(std::uint32_t f, std::uint32_t ip, std::uint32_t iq, const Short_box& all) {
+  // Lists live face f (not around p or q) with the new faces whose boxes
+  // its box meets (bit i: new face i; new faces from the 64th on are always
+  // tested), unless it meets none.
+  void pick_candidate(std::uint32_t f, const Box& all) {
     const Face_slot& sl = slot_[f];
-    if (!sl.alive() || !sl.b.meets(all)) return;
-    for (const std::uint32_t v : sl.v)
-      if (v == ip || v == iq) return;
+    const Box b = Box::of(pos_[sl.v[0]], pos_[sl.v[1]], pos_[sl.v[2]]);
+    if (!b.overlaps(all)) return;
     std::uint64_t mask = 0;
     for (std::size_t i = 0; i < std::min<std::size_t>(fresh_.size(), 64); ++i)
-      mask |= static_cast<std::uint64_t>(sl.b.meets(fresh_box_[i])) << i;
+      mask |= static_cast<std::uint64_t>(b.overlaps(fresh_box_[i])) << i;
     if (mask == 0 && fresh_.size() <= 64) return;
-    for (const std::uint32_t v : sl.v) prefetch(pos_.address(v));
     candidates_.push_back({f, mask});
   }
 
@@ -1276,9 +1415,10 @@ class Collapser {
       }
     }
     if (o_.prevent_self_intersections) {
+      vflags_[iq] |= vflags_[ip]; // on_border: no other vertex joins or leaves the border
       for (const H side : {h, oh}) {
         if (border(side)) continue;
-        const std::uint32_t sf = slot_of_[fi(face(side, g_))];
+        const std::uint32_t sf = fi(face(side, g_));
         slot_[sf].v[0] = Face_slot::dead;
         grid_.remove(sf);
       }
@@ -1414,6 +1554,7 @@ class Collapser {
   // collapse of the pass touched.
   bool passes_ = false;
   std::vector<std::uint64_t> cand_;
+  std::vector<std::uint32_t> high_, low_; // per pass: candidates by the high, then the low half of their cost's bits
   std::vector<std::pair<std::uint64_t, std::uint64_t>> ties_; // (vertex-index pair, candidate)
   // Per edge, its cost at the last pass that computed it (kept while no
   // collapse touches its ends), or a mark.
@@ -1430,29 +1571,32 @@ class Collapser {
   // Feature lines: per edge, is it one; per vertex, does it move along one.
   bool features_ = false;
   // The self-intersection guard: faces by index, alive or not, and the grid.
-  // Per face (24 bytes): its box in 16 bits an axis (for the candidates'
-  // masks; monotone quantization keeps every overlap), its corners (read by
-  // a candidate's exact test without walking the mesh; v[0] == dead once it
-  // is gone). The grid lists each face with its exact box.
+  // Per face (12 bytes): its corners (read by the ring certificate and a
+  // candidate's tests without walking the mesh; v[0] == dead once it is
+  // gone). A candidate's box is made from its points when needed (with the
+  // ring certified, for the few faces with no corner in the ring). The grid
+  // lists each face with its exact box.
   struct Face_slot {
-    Short_box b;
     static constexpr std::uint32_t dead = ~std::uint32_t{0};
     std::uint32_t v[3] = {dead, 0, 0};
     bool alive() const { return v[0] != dead; }
-    void set(const Short_box& box, const std::array<std::uint32_t, 3>& ids) {
+    void set(const std::array<std::uint32_t, 3>& ids) {
       v[0] = ids[0];
       v[1] = ids[1];
       v[2] = ids[2];
-      b = box;
     }
   };
-  Quantizer quantize_; // for the slots' and the new faces' boxes
-  std::vector<Face_slot> slot_; // in Morton order (see build_grid)
-  static constexpr std::uint32_t no_slot = ~std::uint32_t{0};
-  std::vector<std::uint32_t> slot_of_; // by face index (live faces)
+  std::vector<Face_slot> slot_; // by face index
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
+  std::vector<std::uint32_t> ring_;   // p, q, then the link vertices (indices)
+  std::vector<std::uint32_t> foreign_; // near faces with no corner in ring_
+  // Per vertex: has a border edge; for ring_projects_one_to_one, is p or q,
+  // is in the link.
+  static constexpr std::uint8_t on_border = 1, star = 2, link = 4;
+  std::vector<std::uint8_t> vflags_;
+  std::vector<std::uint64_t> ring_edges_; // ∂U (see ring_projects_one_to_one), from << 32 | to
   std::vector<H> around_;           // the survivor's incoming halfedges
-  std::vector<Short_box> fresh_box_;
+  std::vector<Box> fresh_box_;
   std::vector<std::uint32_t> near_; // slots a grid query found
   std::vector<std::pair<std::uint32_t, std::uint64_t>> candidates_; // slot, new faces its box meets
   std::vector<Fresh_plane> fresh_plane_;

@@ -34,44 +34,6 @@ struct Box {
   }
 };
 
-// A box in 16 bits an axis: a Box through Quantizer, whose map is monotone
-// (non-decreasing) on each axis, so that boxes that meet stay boxes that
-// meet (a quarter of the bytes; the tests are integer compares).
-struct Short_box {
-  std::uint16_t lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-  // Do they overlap? (No branches: for a mask over many boxes.)
-  bool meets(const Short_box& o) const {
-    return (lo[0] <= o.hi[0]) & (o.lo[0] <= hi[0]) & (lo[1] <= o.hi[1]) & (o.lo[1] <= hi[1]) & (lo[2] <= o.hi[2]) &
-           (o.lo[2] <= hi[2]);
-  }
-};
-
-// x ↦ clamp((x − origin) · scale, 0, 65535), truncated, on each axis.
-struct Quantizer {
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-  double scale = 1.0;
-  // Fits [lo, hi] into the 16-bit range (a point outside still maps
-  // monotonically: clamped).
-  static Quantizer over(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
-    Quantizer q;
-    q.origin = lo;
-    const double extent = (hi - lo).maxCoeff();
-    q.scale = extent > 0 ? 65535.0 / extent : 1.0;
-    return q;
-  }
-  std::uint16_t axis(double x, int i) const {
-    return static_cast<std::uint16_t>(std::clamp((x - origin[i]) * scale, 0.0, 65535.0));
-  }
-  Short_box operator()(const Box& b) const {
-    Short_box r;
-    for (int i = 0; i < 3; ++i) {
-      r.lo[i] = axis(b.lo[i], i);
-      r.hi[i] = axis(b.hi[i], i);
-    }
-    return r;
-  }
-};
-
 class Face_grid {
  public:
   // Cells of size `cell`; faces (slots) numbered below `faces`.
@@ -93,8 +55,12 @@ class Face_grid {
       auto& list = cell(k);
       // A full list drops its stale entries before it grows: cells that no
       // query walks (where the guard decides without searching) would
-      // otherwise keep every face's every listing.
-      if (list.size() == list.capacity()) drop_stale(list);
+      // otherwise keep every face's every listing. It grows by a quarter,
+      // not twice (832k → 10%: 3 MB less at the peak, no slower).
+      if (list.size() == list.capacity()) {
+        drop_stale(list);
+        if (list.size() == list.capacity()) list.reserve(list.size() + list.size() / 4 + 4);
+      }
       list.push_back({f, static_cast<std::uint8_t>(v << 3 | e.flags), e.x, e.y, e.z});
     });
   }
