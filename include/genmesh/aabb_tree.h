@@ -201,6 +201,8 @@ public:
     if (start >= tris_.size()) return closest_point(q, max_squared_distance);
     Search s{max_squared_distance};
     test_triangle(q, static_cast<std::uint32_t>(start), s);
+    // The descent does not test it again (the same distance: no change).
+    s.tested = static_cast<std::uint32_t>(start);
     search(q, s);
     return answer(s);
   }
@@ -438,6 +440,7 @@ private:
     double best_d;
     Triangle_closest best_c{};
     std::uint32_t best = npos;
+    std::uint32_t tested = npos; // a triangle tested before the descent (closest_point_from's start)
   };
 
   void test_triangle(const Eigen::Vector3d& q, std::uint32_t i, Search& s) const {
@@ -524,8 +527,10 @@ private:
           n = ch;
           continue;
         }
-        test_triangle(q, ch & ~tri_bit, s);
-        bound = bound_up(s.best_d);
+        if ((ch & ~tri_bit) != s.tested) {
+          test_triangle(q, ch & ~tri_bit, s);
+          bound = bound_up(s.best_d);
+        }
       }
       // The children within reach, nearest first (insertion sort of <= 4).
       int order[4], m = 0;
@@ -539,7 +544,7 @@ private:
       // Triangles now, nearest first (each may lower the bound) ...
       for (int i = 0; i < m; ++i) {
         const std::uint32_t ch = node.child[order[i]];
-        if ((ch & tri_bit) && d[order[i]] <= bound) {
+        if ((ch & tri_bit) && d[order[i]] <= bound && (ch & ~tri_bit) != s.tested) {
           test_triangle(q, ch & ~tri_bit, s);
           bound = bound_up(s.best_d);
         }
