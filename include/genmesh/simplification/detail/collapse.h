@@ -425,24 +425,21 @@ class Collapser {
       // the list holds a pass's worth of edges, not every edge (8 bytes an
       // edge: 10 MB at 832k faces, the run's largest array).
       std::uint32_t limit = ~std::uint32_t{0};
-      std::size_t listed = n;
+      std::size_t listed = n, rank = 0;
+      std::uint32_t hi = 0;
+      bool select = false;
       if (has_target && !unlimited) {
         const std::size_t goal = (faces_ - target_faces) / 8 + 1; // a quarter of the collapses still needed
         if (goal < n) {
+          // The high half of the rank's bits; listed first up to 1.5x the
+          // top of that bucket (1.5f * x is monotone in x), then cut.
           std::size_t below = 0;
-          std::uint32_t hi = 0;
           while (below + high_[hi] <= goal) below += high_[hi++];
-          // (By index: an edge that is gone is dirty, < 0.)
-          low_.assign(std::size_t{1} << 16, 0);
-          for (const float c : ecost_)
-            if (c >= 0 && std::bit_cast<std::uint32_t>(c) >> 16 == hi) ++low_[std::bit_cast<std::uint32_t>(c) & 0xffffu];
-          std::size_t rank = goal - below;
-          std::uint32_t lo = 0;
-          while (low_[lo] <= rank) rank -= low_[lo++];
-          const float at = std::bit_cast<float>(hi << 16 | lo);
-          limit = std::bit_cast<std::uint32_t>(1.5f * at);
+          rank = goal - below;
+          limit = std::bit_cast<std::uint32_t>(1.5f * std::bit_cast<float>(hi << 16 | 0xffffu));
           listed = 0;
-          for (std::uint32_t b = 0; b <= (limit >> 16); ++b) listed += high_[b]; // at least those up to limit
+          for (std::uint32_t b = 0; b <= (limit >> 16); ++b) listed += high_[b];
+          select = true;
         }
       }
       cand_.clear();
@@ -453,6 +450,17 @@ class Collapser {
         const float c = ecost_[k];
         if (c >= 0 && std::bit_cast<std::uint32_t>(c) <= limit)
           cand_.push_back((std::uint64_t{std::bit_cast<std::uint32_t>(c)} << 32) | k);
+      }
+      if (select) {
+        // The low half of the rank's bits, among the listed (they hold the
+        // whole bucket), and the exact limit.
+        low_.assign(std::size_t{1} << 16, 0);
+        for (const std::uint64_t x : cand_)
+          if ((x >> 48) == hi) ++low_[(x >> 32) & 0xffffu];
+        std::uint32_t lo = 0;
+        while (low_[lo] <= rank) rank -= low_[lo++];
+        const std::uint64_t cut_at = std::uint64_t{std::bit_cast<std::uint32_t>(1.5f * std::bit_cast<float>(hi << 16 | lo))};
+        std::erase_if(cand_, [cut_at](std::uint64_t x) { return (x >> 32) > cut_at; });
       }
       const auto end = cand_.end();
       const bool cut = cand_.size() < n; // some candidates wait beyond the limit
