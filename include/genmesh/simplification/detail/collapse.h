@@ -1152,7 +1152,7 @@ class Collapser {
       // the surface curves both ways, u's far corners straddle a new face's
       // plane while its corners lie on one side of u's): computed once, when
       // needed.
-      Eigen::Vector3d un;
+      Eigen::Vector3d un = Eigen::Vector3d::Zero(); // set with uscale (zeroed: -Wmaybe-uninitialized)
       double uscale = 0;
       for (std::size_t i = 0; i < nf; ++i) {
         if (!(i < 64 ? (mask >> i) & 1u : Box::of(u.p[0], u.p[1], u.p[2]).overlaps(fresh_box_[i])) || off_plane(i, u))
