@@ -401,7 +401,7 @@ class Collapser {
       bool above = false;
       Placement pl;
       std::size_t n = 0;
-      high_.assign(std::size_t{1} << 16, 0);
+      high_.assign(std::size_t{1} << 12, 0);
       for (const E e : edges(g_)) {
         const std::size_t k = ei(e);
         float& c = ecost_[k];
@@ -413,17 +413,18 @@ class Collapser {
         }
         if (c >= 0) {
           ++n;
-          ++high_[std::bit_cast<std::uint32_t>(c) >> 16];
+          ++high_[std::bit_cast<std::uint32_t>(c) >> 19]; // exponent and 3 bits (a non-negative float)
         } else {
           above |= c == Cost_mark::above;
         }
       }
       if (n == 0) return above ? Stop_reason::max_error : Stop_reason::no_collapse_left;
       // The limit: 1.5x the cost of rank `goal` (the same float a sort of
-      // all candidates would put there), found by the high and then the low
-      // half of its bits; only the candidates up to it are listed, so that
+      // all candidates would put there), found by its top 12 bits and then
+      // by 10 and 9 more; only the candidates up to it are listed, so that
       // the list holds a pass's worth of edges, not every edge (8 bytes an
-      // edge: 10 MB at 832k faces, the run's largest array).
+      // edge: 10 MB at 832k faces, the run's largest array). The counts take
+      // 20 KB (a 2^16-bucket version's 0.5 MB outweighed the list on 10k faces).
       std::uint32_t limit = ~std::uint32_t{0};
       std::size_t listed = n, rank = 0;
       std::uint32_t hi = 0;
@@ -431,14 +432,14 @@ class Collapser {
       if (has_target && !unlimited) {
         const std::size_t goal = (faces_ - target_faces) / 8 + 1; // a quarter of the collapses still needed
         if (goal < n) {
-          // The high half of the rank's bits; listed first up to 1.5x the
-          // top of that bucket (1.5f * x is monotone in x), then cut.
+          // The rank's top bits; listed first up to 1.5x the top of that
+          // bucket (1.5f * x is monotone in x), then cut.
           std::size_t below = 0;
           while (below + high_[hi] <= goal) below += high_[hi++];
           rank = goal - below;
-          limit = std::bit_cast<std::uint32_t>(1.5f * std::bit_cast<float>(hi << 16 | 0xffffu));
+          limit = std::bit_cast<std::uint32_t>(1.5f * std::bit_cast<float>(hi << 19 | 0x7ffffu));
           listed = 0;
-          for (std::uint32_t b = 0; b <= (limit >> 16); ++b) listed += high_[b];
+          for (std::uint32_t b = 0; b <= (limit >> 19) && b < high_.size(); ++b) listed += high_[b];
           select = true;
         }
       }
@@ -452,14 +453,21 @@ class Collapser {
           cand_.push_back((std::uint64_t{std::bit_cast<std::uint32_t>(c)} << 32) | k);
       }
       if (select) {
-        // The low half of the rank's bits, among the listed (they hold the
-        // whole bucket), and the exact limit.
-        low_.assign(std::size_t{1} << 16, 0);
+        // The rank's other bits, among the listed (they hold the whole
+        // bucket): 10, then 9; then the exact limit.
+        low_.assign(std::size_t{1} << 10, 0);
         for (const std::uint64_t x : cand_)
-          if ((x >> 48) == hi) ++low_[(x >> 32) & 0xffffu];
+          if ((x >> 51) == hi) ++low_[(x >> 41) & 0x3ffu];
+        std::uint32_t mid = 0;
+        while (low_[mid] <= rank) rank -= low_[mid++];
+        const std::uint64_t top = std::uint64_t{hi} << 10 | mid;
+        low_.assign(std::size_t{1} << 9, 0);
+        for (const std::uint64_t x : cand_)
+          if ((x >> 41) == top) ++low_[(x >> 32) & 0x1ffu];
         std::uint32_t lo = 0;
         while (low_[lo] <= rank) rank -= low_[lo++];
-        const std::uint64_t cut_at = std::uint64_t{std::bit_cast<std::uint32_t>(1.5f * std::bit_cast<float>(hi << 16 | lo))};
+        const std::uint32_t at = static_cast<std::uint32_t>(top << 9 | lo);
+        const std::uint64_t cut_at = std::uint64_t{std::bit_cast<std::uint32_t>(1.5f * std::bit_cast<float>(at))};
         std::erase_if(cand_, [cut_at](std::uint64_t x) { return (x >> 32) > cut_at; });
       }
       const auto end = cand_.end();
@@ -1144,7 +1152,7 @@ class Collapser {
       // the surface curves both ways, u's far corners straddle a new face's
       // plane while its corners lie on one side of u's): computed once, when
       // needed.
-      Eigen::Vector3d un;
+      Eigen::Vector3d un = Eigen::Vector3d::Zero(); // set with uscale (zeroed: -Wmaybe-uninitialized)
       double uscale = 0;
       for (std::size_t i = 0; i < nf; ++i) {
         if (!(i < 64 ? (mask >> i) & 1u : Box::of(u.p[0], u.p[1], u.p[2]).overlaps(fresh_box_[i])) || off_plane(i, u))
@@ -1562,7 +1570,7 @@ class Collapser {
   // collapse of the pass touched.
   bool passes_ = false;
   std::vector<std::uint64_t> cand_;
-  std::vector<std::uint32_t> high_, low_; // per pass: candidates by the high, then the low half of their cost's bits
+  std::vector<std::uint32_t> high_, low_; // per pass: candidates by the top bits of their cost, then by the others
   std::vector<std::pair<std::uint64_t, std::uint64_t>> ties_; // (vertex-index pair, candidate)
   // Per edge, its cost at the last pass that computed it (kept while no
   // collapse touches its ends), or a mark.
