@@ -929,8 +929,8 @@ private:
   template <class Fn>
   void for_each_in(V v, Fn&& f) const {
     Ring ring;
-    const std::size_t first = walk_ring(v, [&](H x) { ring.push_back(x); });
-    const std::size_t k = ring.size();
+    for_each_in_any_order(v, [&](H x) { ring.push_back(x); });
+    const std::size_t first = canonical_first(ring), k = ring.size();
     for (std::size_t i = 0; i < k; ++i) f(ring[(first + i) % k]);
   }
 
@@ -973,7 +973,8 @@ private:
     }
   }
 
-  /// walk_ring's canonical start among the halfedges of a ring in walk order.
+  /// The canonical start (see for_each_in) among the halfedges of a ring in
+  /// walk order: its first border halfedge, else the one of its lowest edge.
   std::size_t canonical_first(const Ring& r) const {
     std::size_t first = 0;
     std::uint32_t lowest = k_none;
@@ -981,33 +982,6 @@ private:
       if (is_border(r[i])) return i;
       if (const std::uint32_t e = eid(r[i]); e < lowest) lowest = e, first = i;
     }
-    return first;
-  }
-
-  /// Calls f(x) for every halfedge x into v, from halfedge(v); returns the
-  /// position of the canonical start among them (see for_each_in).
-  template <class Fn>
-  std::size_t walk_ring(V v, Fn&& f) const {
-    const H start = halfedge(v, g_);
-    if (start == null_h()) return 0;
-    std::size_t first = 0, i = 0;
-    bool border = false;
-    std::uint32_t lowest = k_none;
-    H x = start;
-    do {
-      if (!border) {
-        if (is_border(x)) {
-          border = true;
-          first = i;
-        } else if (const std::uint32_t e = eid(x); e < lowest) {
-          lowest = e;
-          first = i;
-        }
-      }
-      f(x);
-      x = opposite(next(x, g_), g_);
-      ++i;
-    } while (x != start);
     return first;
   }
 
