@@ -146,6 +146,7 @@ class Collapser {
       return r;
     }
     passes_ = o_.schedule == Schedule::passes;
+    if (!passes_) max_error_ = max_error; // passes leave the edges above it out
     initialize();
     if (passes_) {
       r.stop_reason = run_passes(r, has_target, target, max_error, faces0, total);
@@ -158,16 +159,16 @@ class Collapser {
         r.stop_reason = Stop_reason::no_collapse_left;
         break;
       }
-      const double error = std::sqrt(queue_.top_priority());
-      if (error > max_error) {
-        r.stop_reason = Stop_reason::max_error;
-        break;
-      }
+      // The queue holds costs as floats (monotone: the order only gains
+      // ties); the bound is checked on the exact cost, in collapse().
       const std::size_t ei = queue_.pop();
       if (collapse(ei)) {
         ++r.collapses;
-        r.max_error = std::max(r.max_error, error);
+        r.max_error = std::max(r.max_error, std::sqrt(last_cost_));
         if ((r.collapses & 16383u) == 0) vis_.on_step("faces", std::min(faces0 - faces_, total - 1), total);
+      } else if (over_error_) {
+        r.stop_reason = Stop_reason::max_error;
+        break;
       }
     }
     vis_.on_step("faces", total, total);
@@ -369,7 +370,7 @@ class Collapser {
     queue_.reserve(eb);
     Placement pl;
     for (const E e : edges(g_))
-      if (evaluate(halfedge(e, g_), pl)) queue_.push(ei(e), pl.cost);
+      if (evaluate(halfedge(e, g_), pl)) queue_.push(ei(e), static_cast<float>(pl.cost));
   }
 
   // Schedule::passes. Each pass: every live edge's cost (the edges the
@@ -580,7 +581,7 @@ class Collapser {
   // The queue's order: by cost, ties by the vertex-index pair.
   struct Order {
     const Collapser* c;
-    bool operator()(double a, std::size_t ka, double b, std::size_t kb) const {
+    bool operator()(float a, std::size_t ka, float b, std::size_t kb) const {
       if (a < b) return true;
       if (b < a) return false;
       return ka != kb && c->pair(ka) < c->pair(kb);
@@ -1361,7 +1362,7 @@ class Collapser {
     refused_[k] = 0;
     const H h = halfedge(e, g_);
     Placement pl;
-    if (evaluate(h, pl)) queue_.update(k, pl.cost);
+    if (evaluate(h, pl)) queue_.update(k, static_cast<float>(pl.cost));
     else queue_.erase(k);
   }
 
@@ -1371,6 +1372,10 @@ class Collapser {
     Placement pl;
     if (!evaluate(h, pl)) return false; // never queued so
     last_cost_ = pl.cost;
+    if (std::sqrt(pl.cost) > max_error_) {
+      over_error_ = true;
+      return false;
+    }
     if (!target_survives(h, pl.position)) h = opposite(h, g_);
     // collapse_edge(edge(h)) keeps target(h) (edge descriptors remember
     // their halfedge on every backend).
@@ -1582,6 +1587,9 @@ class Collapser {
   std::vector<float> ecost_;
   std::vector<std::uint8_t> touched_;
   double last_cost_ = 0; // of the last collapse() that got as far as the placement
+  // The queue's error bound (a distance), and whether collapse() stopped at it.
+  double max_error_ = std::numeric_limits<double>::infinity();
+  bool over_error_ = false;
   V last_survivor_{};    // its survivor, once it collapsed
   std::vector<std::uint8_t> locked_, hint_, refused_;
   // Feature lines: per edge, is it one; per vertex, does it move along one.
@@ -1622,8 +1630,11 @@ class Collapser {
   std::vector<std::uint8_t> feature_, on_line_;
   std::vector<E> edesc_;
   // 32-bit keys and positions: edge indices fit (the mesh's own indices are
-  // 32-bit). Entries of a double and a key: 16 bytes.
-  using Queue = Mutable_priority_queue<double, Order, std::uint32_t>;
+  // 32-bit). Entries of a float cost (rounded to nearest, which keeps the
+  // order of the doubles but for new ties, broken by vertex-index pair as
+  // before) and a key: 8 bytes, against 16 with a double (10 MB less at
+  // 832k faces).
+  using Queue = Mutable_priority_queue<float, Order, std::uint32_t>;
   Queue queue_;
   // Memoryless policies: the profile's scratch, and the collapse count at
   // which each edge was last requeued.
