@@ -42,9 +42,18 @@ class Face_grid {
     table_ = {};
     used_ = 0;
     version_.assign(faces, 0);
-    std::size_t cap = 16;
-    while (cap < faces / 16) cap *= 2; // a cell lists tens of faces; grown at load 1/2
-    table_.resize(cap);
+    version_.shrink_to_fit();
+    // Grown at load 1/2 from a small table: a cell lists about 80 faces at
+    // the first build (832k armadillo: 15k cells), so a table sized from the
+    // face count (faces / 16, until session 10) was a quarter full, 2 MB.
+    table_.resize(16);
+  }
+
+  // Cuts every cell's list to its size (after a build: what the growth
+  // policy reserved beyond it).
+  void shrink_to_fit() {
+    for (Bucket& b : table_)
+      if (b.key != empty) b.list.shrink_to_fit();
   }
 
   // Lists f with box b in every cell b overlaps; entries listed for f
@@ -65,8 +74,12 @@ class Face_grid {
     });
   }
 
-  // f is gone: its entries become stale.
-  void remove(std::uint32_t f) { bump(f); }
+  // f is gone for good: its entries become stale, and no query returns it
+  // again (its version is `gone`, which no entry has).
+  void remove(std::uint32_t f) { version_[f] = gone; }
+
+  // The face indices the grid was reset for.
+  std::size_t face_bound() const { return version_.size(); }
 
   // Appends to `out` every face listed in a cell b overlaps whose box's
   // part in that cell may meet b's, each face once (in the cell holding the
@@ -115,6 +128,7 @@ class Face_grid {
     std::vector<Entry> list;
   };
   static constexpr std::uint64_t empty = ~std::uint64_t{0};
+  static constexpr std::uint8_t gone = 0x80; // a removed face's version: above every entry's (5 bits)
 
 
   void drop_stale(std::vector<Entry>& list) const {
