@@ -707,4 +707,33 @@ TEST(PointReader, ReadsTheMeshsPointsOnEveryBackend) {
   check_point_reader(Om_tri{});
 }
 
+// ---------------------------------------------------------------------------
+// Edges by index (HasNativeEdgeOfIndex, what simplify uses instead of an
+// array of descriptors): genmesh_native_edge(edge_index, g, i) is the
+// descriptor edges(g) yields for index i, with the same halfedge.
+
+static_assert(genmesh::HasNativeEdgeOfIndex<genmesh_test::Halfedge_mesh> &&
+              genmesh::HasNativeEdgeOfIndex<genmesh_test::Surface_mesh> &&
+              genmesh::HasNativeEdgeOfIndex<genmesh_test::Incidence_mesh>);
+static_assert(!genmesh::HasNativeEdgeOfIndex<Polyhedron_with_ids> && !genmesh::HasNativeEdgeOfIndex<Om_tri>);
+
+template <class G>
+void check_edge_of_index(G g) {
+  genmesh::build_mesh(genmesh::make_icosphere(2), g);
+  // Three edges gone (their indices stay holes): the others keep theirs.
+  ASSERT_TRUE(genmesh::collapse_edge(*std::next(edges(g).begin(), 7), g));
+  const auto idx = get(genmesh::edge_index, std::as_const(g));
+  for (auto e : edges(g)) {
+    const auto made = genmesh_native_edge(genmesh::edge_index, std::as_const(g), static_cast<std::size_t>(get(idx, e)));
+    EXPECT_EQ(made, e);
+    EXPECT_EQ(halfedge(made, g), halfedge(e, g));
+  }
+}
+
+TEST(EdgeOfIndex, IsTheDescriptorEdgesYields) {
+  check_edge_of_index(genmesh_test::Halfedge_mesh{});
+  check_edge_of_index(genmesh_test::Surface_mesh{});
+  check_edge_of_index(genmesh_test::Incidence_mesh{});
+}
+
 } // namespace

@@ -23,6 +23,7 @@
 
 #include <genmesh/point_traits.h>
 
+#include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <Eigen/Core>
@@ -80,6 +81,19 @@ template <class G, class Tag>
 concept HasIndexMap = requires(const G& g) {
   get(Tag{}, g);
   { index_bound(Tag{}, g) } -> std::convertible_to<std::size_t>;
+};
+
+/// A graph whose edge descriptors are made from their indices, through the
+/// native hook
+///   genmesh_native_edge(edge_index, g, i)   // const g, found by ADL
+/// returning the edge_descriptor of index i (a live edge's index, below
+/// index_bound(edge_index, g)): the descriptor edges(g) yields for it.
+/// An algorithm that keeps edges by index then needs no array of
+/// descriptors (4 bytes or more an edge). genmesh's meshes and
+/// CGAL::Surface_mesh (<genmesh/adaptors/cgal.h>) do.
+template <class G>
+concept HasNativeEdgeOfIndex = HasIndexMap<G, edge_index_t> && requires(const G& g, std::size_t i) {
+  { genmesh_native_edge(edge_index, g, i) } -> std::same_as<typename boost::graph_traits<G>::edge_descriptor>;
 };
 
 namespace detail {

@@ -93,6 +93,12 @@ template <template <class> class M, class P>
 std::span<const P> genmesh_native_point_array(vertex_point_t, const M<P>& m) {
   return m.point_array();
 }
+/// Edge i's descriptor (HasNativeEdgeOfIndex, <genmesh/property_maps.h>).
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Edge_index genmesh_native_edge(edge_index_t, const M<P>&, std::size_t i) {
+  return Edge_index(static_cast<Edge_index::size_type>(i));
+}
 template <template <class> class M, class P>
   requires detail::is_genmesh_mesh<M>
 Index_map<Vertex_index> get(vertex_index_t, const M<P>&) {
