@@ -350,9 +350,7 @@ class Collapser {
     }
     init_features(eb);
     if (o_.prevent_self_intersections) {
-      // Slots by face index.
       const std::size_t fb = index_bound(face_index, g_);
-      slot_.assign(fb, Face_slot{});
       vflags_.assign(vb, 0);
       for (const E e : edges(g_)) {
         const H h = halfedge(e, g_);
@@ -361,14 +359,23 @@ class Collapser {
           vflags_[vi(target(h, g_))] = on_border;
         }
       }
-      for (const F f : faces(g_)) {
-        const H h0 = halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
-        const std::array<std::uint32_t, 3> id{static_cast<std::uint32_t>(vi(target(h0, g_))),
-                                              static_cast<std::uint32_t>(vi(target(h1, g_))),
-                                              static_cast<std::uint32_t>(vi(target(h2, g_)))};
-        slot_[fi(f)].set(id);
+      // The grid names faces by index; the descriptor is made from the index
+      // where it is its index (Halfedge_mesh, Incidence_mesh, Surface_mesh,
+      // OpenMesh), else face_h_ keeps a halfedge of each face.
+      faces_by_index_ = false;
+      if constexpr (std::is_constructible_v<F, std::uint32_t>) {
+        faces_by_index_ = true;
+        for (const F f : faces(g_))
+          if (!(F(static_cast<std::uint32_t>(fi(f))) == f)) {
+            faces_by_index_ = false;
+            break;
+          }
       }
-      build_grid();
+      if (!faces_by_index_) {
+        face_h_.assign(fb, boost::graph_traits<G>::null_halfedge());
+        for (const F f : faces(g_)) face_h_[fi(f)] = halfedge(f, g_);
+      }
+      build_grid(fb);
     }
     const double deg = std::clamp(o_.max_normal_deviation, 0.0, 180.0);
     cos_max_ = std::max(0.0, std::cos(deg * std::numbers::pi / 180.0));
@@ -754,15 +761,21 @@ class Collapser {
     std::array<std::array<double, 2>, 3> q; // the corners projected
   };
 
-  // The corners of live face f as its slot has them (set by build_grid and
-  // update_grid, which see every face whose corners a collapse changes).
-  Mesh_triangle<std::uint32_t> slot_triangle(std::size_t f) const {
-    Mesh_triangle<std::uint32_t> t;
-    for (int c = 0; c < 3; ++c) {
-      t.id[c] = slot_[f].v[c];
-      t.p[c] = pos_[t.id[c]];
-    }
-    return t;
+  // A halfedge of live face f (an index).
+  H face_halfedge(std::size_t f) const {
+    if constexpr (std::is_constructible_v<F, std::uint32_t>)
+      if (faces_by_index_) return halfedge(F(static_cast<std::uint32_t>(f)), g_);
+    return face_h_[f];
+  }
+
+  // The corners of the face of h (h: a → b in face (a, b, c)), read from the
+  // mesh: source, target, the target of next.
+  std::array<std::uint32_t, 3> corners_of(H h) const {
+    return {static_cast<std::uint32_t>(vi(source(h, g_))), static_cast<std::uint32_t>(vi(target(h, g_))),
+            static_cast<std::uint32_t>(vi(target(next(h, g_), g_)))};
+  }
+  Mesh_triangle<std::uint32_t> face_triangle(const std::array<std::uint32_t, 3>& id) const {
+    return {{pos_[id[0]], pos_[id[1]], pos_[id[2]]}, id};
   }
 
   // The mean length of the live edges (0 without any).
@@ -781,28 +794,19 @@ class Collapser {
   // (208k armadillo → 10%, guard time: 1x 2.9 s, 2x 2.2 s, 3x-4x 1.7 s, 8x
   // 1.9 s with the search of session 7; with the ring certificate, 832k → 10%:
   // 6x as fast as 4x and 3-4 MB less, 8x 1 MB less again but no faster).
-  // Slots are by face index, read from the slots alone (their corners are
-  // current), not the mesh. (Until session 9 they were laid out in Morton
-  // order, with a face → slot map; with the certificate the faces a search
-  // reads are mostly its own ring, and the input's order served as well
-  // without the map's 4 bytes a face: see docs/benchmarks.md.)
-  void build_grid() {
+  // The faces are by index; their corners are read from the mesh, once (the
+  // mean comes from the edges: until session 10 a first pass over the faces'
+  // corners gave it). The cell lists are cut to size after the build (1.3 MB
+  // of 10.7 at 832k faces).
+  void build_grid(std::size_t face_bound) {
     grid_.reset(1.0, 0); // frees the old cells first
-    double sum = 0;
-    std::size_t n = 0;
-    for (std::size_t s = 0; s < slot_.size(); ++s) {
-      if (!slot_[s].alive()) continue;
-      const auto t = slot_triangle(s);
-      sum += (t.p[1] - t.p[0]).norm() + (t.p[2] - t.p[1]).norm() + (t.p[0] - t.p[2]).norm();
-      n += 3;
+    const double m = mean_edge_length();
+    grid_.reset(m > 0 ? 6.0 * m : 1.0, face_bound);
+    for (const F f : faces(g_)) {
+      const auto t = face_triangle(corners_of(halfedge(f, g_)));
+      grid_.insert(static_cast<std::uint32_t>(fi(f)), Box::of(t.p[0], t.p[1], t.p[2]));
     }
-    const double m = n > 0 ? sum / static_cast<double>(n) : 0.0;
-    grid_.reset(m > 0 ? 6.0 * m : 1.0, slot_.size());
-    for (std::size_t s = 0; s < slot_.size(); ++s) {
-      if (!slot_[s].alive()) continue;
-      const auto t = slot_triangle(s);
-      grid_.insert(static_cast<std::uint32_t>(s), Box::of(t.p[0], t.p[1], t.p[2]));
-    }
+    grid_.shrink_to_fit();
     grid_faces_ = faces_;
   }
 
@@ -810,7 +814,6 @@ class Collapser {
   // boxes; when the faces have halved since the last build, rebuild with
   // cells fitting the grown faces.
   void update_grid(V q) {
-    // The slots first: a rebuild reads them.
     const bool rebuild = 2 * faces_ < grid_faces_;
     const H start = halfedge(q, g_);
     H x = start;
@@ -822,12 +825,12 @@ class Collapser {
         const std::uint32_t is = static_cast<std::uint32_t>(vi(source(x, g_))),
                             iq = static_cast<std::uint32_t>(vi(q)),
                             iw = static_cast<std::uint32_t>(vi(target(next(x, g_), g_)));
-        slot_[sf].set({is, iq, iw});
+        if (!faces_by_index_) face_h_[sf] = x; // the face's old halfedge may be gone
         if (!rebuild) grid_.insert(static_cast<std::uint32_t>(sf), Box::of(pos_[is], pos_[iq], pos_[iw]));
       }
       x = opposite(next(x, g_), g_);
     } while (x != start);
-    if (rebuild) build_grid();
+    if (rebuild) build_grid(grid_.face_bound());
   }
 
   // Does the collapse of edge(h) into target(h) at x keep a flat star flat
@@ -987,10 +990,11 @@ class Collapser {
     const auto px = at(x);
     for (const auto& t : fresh_)
       if (!positive(at(t.p[0]), px, at(t.p[2]))) return false;
-    // Marks: p and q (star), the link (link); cleared before returning.
-    for (std::size_t k = 0; k < ring_.size(); ++k) vflags_[ring_[k]] |= k < 2 ? star : link;
+    // Marks: the link; cleared before returning. (near_corners_ holds no
+    // face around p or q.)
+    for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] |= link;
     const bool ok = classify_near(at);
-    for (const std::uint32_t v : ring_) vflags_[v] &= static_cast<std::uint8_t>(~(star | link));
+    for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] &= static_cast<std::uint8_t>(~link);
     if (!ok) return false;
     int crossings = 0;
     for (const std::uint64_t e : ring_edges_) {
@@ -1004,17 +1008,14 @@ class Collapser {
 #ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
   // For the tests: what ring_projects_one_to_one proved, checked by the
   // exact test — the new faces pairwise, and against every face the query
-  // found but those around p or q.
-  void verify_certificate(const std::vector<std::uint32_t>& found, std::uint32_t ip, std::uint32_t iq) const {
+  // found but those around p or q (`found`, by their corners).
+  void verify_certificate(const std::vector<std::array<std::uint32_t, 3>>& found) const {
     for (std::size_t i = 0; i < fresh_.size(); ++i)
       for (std::size_t j = i + 1; j < fresh_.size(); ++j)
         if (faces_intersect(fresh_[i], fresh_[j]))
           throw std::logic_error("simplify: the ring certificate accepted two new faces that meet");
-    for (const std::uint32_t f : found) {
-      if (!slot_[f].alive()) continue;
-      const auto u = slot_triangle(f);
-      if (std::find(u.id.begin(), u.id.end(), ip) != u.id.end() || std::find(u.id.begin(), u.id.end(), iq) != u.id.end())
-        continue;
+    for (const auto& v : found) {
+      const auto u = face_triangle(v);
       bool in_ring = false;
       for (const std::uint32_t v : u.id) in_ring |= std::find(ring_.begin() + 2, ring_.end(), v) != ring_.end();
       if (!in_ring) continue; // tested as a foreign face
@@ -1033,28 +1034,26 @@ class Collapser {
     return (s == unsure ? detail::pred::orient2d(a[0], a[1], b[0], b[1], c[0], c[1]) : s) > 0;
   }
 
-  // ring_projects_one_to_one's pass over near_ (p, q and the link marked):
-  // the faces with no marked corner go to foreign_; the others, but p's and
-  // q's, must project positively (`at`), and give ∂U's edges.
+  // ring_projects_one_to_one's pass over near_corners_ (the faces the query
+  // found, but p's and q's; the link marked): the faces with no corner in
+  // the link go to foreign_; the others must project positively (`at`), and
+  // give ∂U's edges.
   template <class At>
   bool classify_near(const At& at) {
     ring_edges_.clear();
     foreign_.clear();
-    for (const std::uint32_t f : near_) {
-      const Face_slot& sl = slot_[f];
-      if (!sl.alive()) continue;
-      const std::uint8_t m0 = vflags_[sl.v[0]], m1 = vflags_[sl.v[1]], m2 = vflags_[sl.v[2]];
-      if ((m0 | m1 | m2) & star) continue; // around p or q: goes
+    for (const std::array<std::uint32_t, 3>& v : near_corners_) {
+      const std::uint8_t m0 = vflags_[v[0]], m1 = vflags_[v[1]], m2 = vflags_[v[2]];
       const unsigned l = (m0 & link ? 1u : 0u) | (m1 & link ? 2u : 0u) | (m2 & link ? 4u : 0u);
       if (l == 0) {
-        foreign_.push_back(f);
+        foreign_.push_back(v);
         continue;
       }
-      if (!positive(at(pos_[sl.v[0]]), at(pos_[sl.v[1]]), at(pos_[sl.v[2]]))) return false;
+      if (!positive(at(pos_[v[0]]), at(pos_[v[1]]), at(pos_[v[2]]))) return false;
       if (std::popcount(l) > 1) continue;
       // The edge opposite the link corner, unless its twin came already.
       const int w = std::countr_zero(l);
-      const std::uint64_t from = sl.v[(w + 1) % 3], to = sl.v[(w + 2) % 3];
+      const std::uint64_t from = v[(w + 1) % 3], to = v[(w + 2) % 3];
       const auto twin = std::find(ring_edges_.begin(), ring_edges_.end(), to << 32 | from);
       if (twin != ring_edges_.end()) {
         *twin = ring_edges_.back();
@@ -1077,8 +1076,12 @@ class Collapser {
     // cache from the fold-over test).
     // The link (p and q's neighbours but p and q, each once) is gathered on
     // the way for ring_projects_one_to_one.
+    // The faces' indices too (star_faces_, with a 64-bit filter): the grid
+    // query finds them, and they go without reading their corners.
     fresh_.clear();
     ring_.assign({ip, iq});
+    star_faces_.clear();
+    std::uint64_t star_filter = 0;
     bool border_star = false;
     for (const V v : {source(h, g_), target(h, g_)}) {
       const H start = halfedge(v, g_);
@@ -1089,7 +1092,11 @@ class Collapser {
         if (is != ip && is != iq && std::find(ring_.begin() + 2, ring_.end(), is) == ring_.end()) {
           ring_.push_back(is);
         }
-        if (!border(y)) {
+        const F fy = face(y, g_);
+        if (fy != boost::graph_traits<G>::null_face()) {
+          const auto sf = static_cast<std::uint32_t>(fi(fy));
+          star_faces_.push_back(sf);
+          star_filter |= filter_bit(sf);
           const std::uint32_t iw = static_cast<std::uint32_t>(vi(target(next(y, g_), g_)));
           if (is != ip && is != iq && iw != ip && iw != iq) fresh_.push_back({{pos_[is], x, pos_[iw]}, {is, iq, iw}});
         } else {
@@ -1119,10 +1126,17 @@ class Collapser {
     // those with no corner in the ring; their points give the candidates.
     near_.clear();
     grid_.query(all, near_);
-    {
-      // Nearly every slot read is a cache miss: ask for them first.
-      for (const std::uint32_t f : near_) prefetch(&slot_[f]);
-    }
+    // Their corners, but those of the faces around p or q (they go), read
+    // from the mesh in a loop of its own (nearly every read is a cache
+    // miss; independent iterations let the processor overlap them).
+    // (The grid lists live faces only.)
+    if (!faces_by_index_)
+      for (const std::uint32_t f : near_) prefetch(&face_h_[f]);
+    std::erase_if(near_, [&](std::uint32_t f) {
+      return (star_filter & filter_bit(f)) != 0 && std::find(star_faces_.begin(), star_faces_.end(), f) != star_faces_.end();
+    });
+    near_corners_.clear();
+    for (const std::uint32_t f : near_) near_corners_.push_back(corners_of(face_halfedge(f)));
     // With the ring certified, the new faces meet each other and every face
     // at a link vertex only in what they share: only the faces with no
     // corner in ring_ (p, q and the link) are left to test.
@@ -1130,10 +1144,10 @@ class Collapser {
     for (std::size_t k = 2; certified && k < ring_.size(); ++k) certified = !(vflags_[ring_[k]] & on_border);
     certified = certified && ring_projects_one_to_one(x);
     if (certified) {
-      near_.swap(foreign_);
 #ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
-      verify_certificate(foreign_, ip, iq); // the query's list, now in foreign_
+      verify_certificate(near_corners_);
 #endif
+      near_corners_.swap(foreign_);
     } else {
       for (std::size_t i = 0; i < fresh_.size(); ++i)
         for (std::size_t j = i + 1; j < fresh_.size(); ++j)
@@ -1141,23 +1155,15 @@ class Collapser {
               exact_test(fresh_[i], fresh_[j]))
             return false;
     }
-    // The faces not around p or q, their points asked for; then their
-    // boxes pick the candidates.
+    // The faces left (not around p or q), their points asked for; then
+    // their boxes pick the candidates.
     candidates_.clear();
-    std::size_t kept = 0;
-    for (const std::uint32_t f : near_) {
-      const Face_slot& sl = slot_[f];
-      if (!sl.alive() || sl.v[0] == ip || sl.v[1] == ip || sl.v[2] == ip || sl.v[0] == iq || sl.v[1] == iq ||
-          sl.v[2] == iq)
-        continue;
-      for (const std::uint32_t v : sl.v) prefetch(pos_.address(v));
-      near_[kept++] = f;
-    }
-    near_.resize(kept);
-    for (const std::uint32_t f : near_) pick_candidate(f, all);
+    for (const auto& v : near_corners_)
+      for (const std::uint32_t c : v) prefetch(pos_.address(c));
+    for (const auto& v : near_corners_) pick_candidate(v, all);
     const std::size_t nf = fresh_.size();
-    for (const auto& [f, mask] : candidates_) {
-      const Mesh_triangle<std::uint32_t> u = slot_triangle(f);
+    for (const auto& [v, mask] : candidates_) {
+      const Mesh_triangle<std::uint32_t> u = face_triangle(v);
       // u's own plane, for the new faces off_plane leaves undecided (where
       // the surface curves both ways, u's far corners straddle a new face's
       // plane while its corners lie on one side of u's): computed once, when
@@ -1179,24 +1185,28 @@ class Collapser {
     return true;
   }
 
+  // One bit of 64 for face index f (star_faces_'s filter).
+  static std::uint64_t filter_bit(std::uint32_t f) {
+    return std::uint64_t{1} << ((f * 0x9E3779B1u) >> 26);
+  }
+
   static void prefetch([[maybe_unused]] const void* p) {
 #if defined(__GNUC__) || defined(__clang__)
     __builtin_prefetch(p);
 #endif
   }
 
-  // Lists live face f (not around p or q) with the new faces whose boxes
+  // Lists the live face with corners v (not around p or q) with the new faces whose boxes
   // its box meets (bit i: new face i; new faces from the 64th on are always
   // tested), unless it meets none.
-  void pick_candidate(std::uint32_t f, const Box& all) {
-    const Face_slot& sl = slot_[f];
-    const Box b = Box::of(pos_[sl.v[0]], pos_[sl.v[1]], pos_[sl.v[2]]);
+  void pick_candidate(const std::array<std::uint32_t, 3>& v, const Box& all) {
+    const Box b = Box::of(pos_[v[0]], pos_[v[1]], pos_[v[2]]);
     if (!b.overlaps(all)) return;
     std::uint64_t mask = 0;
     for (std::size_t i = 0; i < std::min<std::size_t>(fresh_.size(), 64); ++i)
       mask |= static_cast<std::uint64_t>(b.overlaps(fresh_box_[i])) << i;
     if (mask == 0 && fresh_.size() <= 64) return;
-    candidates_.push_back({f, mask});
+    candidates_.push_back({v, mask});
   }
 
   // faces_intersect, counted.
@@ -1448,9 +1458,7 @@ class Collapser {
       vflags_[iq] |= vflags_[ip]; // on_border: no other vertex joins or leaves the border
       for (const H side : {h, oh}) {
         if (border(side)) continue;
-        const std::uint32_t sf = fi(face(side, g_));
-        slot_[sf].v[0] = Face_slot::dead;
-        grid_.remove(sf);
+        grid_.remove(static_cast<std::uint32_t>(fi(face(side, g_))));
       }
     }
     // The survivor's data before the collapse: it reads both ends' points
@@ -1607,35 +1615,30 @@ class Collapser {
   Bits hint_, refused_;
   // Feature lines: per edge, is it one; per vertex, does it move along one.
   bool features_ = false;
-  // The self-intersection guard: faces by index, alive or not, and the grid.
-  // Per face (12 bytes): its corners (read by the ring certificate and a
-  // candidate's tests without walking the mesh; v[0] == dead once it is
-  // gone). A candidate's box is made from its points when needed (with the
-  // ring certified, for the few faces with no corner in the ring). The grid
-  // lists each face with its exact box.
-  struct Face_slot {
-    static constexpr std::uint32_t dead = ~std::uint32_t{0};
-    std::uint32_t v[3] = {dead, 0, 0};
-    bool alive() const { return v[0] != dead; }
-    void set(const std::array<std::uint32_t, 3>& ids) {
-      v[0] = ids[0];
-      v[1] = ids[1];
-      v[2] = ids[2];
-    }
-  };
-  std::vector<Face_slot> slot_; // by face index
+  // The self-intersection guard: the grid, which lists each live face (by
+  // index) with its exact box; the ring certificate and the candidates'
+  // tests read the corners of the faces it returns from the mesh. Where a
+  // face descriptor is not its index, face_h_ holds a halfedge of each face
+  // (update_grid resets it for every face a collapse changes: the collapse
+  // may remove the one it had). Until session 10 a 12-byte slot per face
+  // held the corners (10 MB at 832k faces), for one read a face instead of
+  // the mesh's few.
+  bool faces_by_index_ = false;
+  std::vector<H> face_h_;
+  std::vector<std::array<std::uint32_t, 3>> near_corners_; // near_'s faces not around p or q (corners)
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
   std::vector<std::uint32_t> ring_;   // p, q, then the link vertices (indices)
-  std::vector<std::uint32_t> foreign_; // near faces with no corner in ring_
+  std::vector<std::uint32_t> star_faces_; // the faces around p and q (indices)
+  std::vector<std::array<std::uint32_t, 3>> foreign_; // near faces with no corner in ring_ (corners)
   // Per vertex: has a border edge; for ring_projects_one_to_one, is p or q,
   // is in the link.
-  static constexpr std::uint8_t on_border = 1, star = 2, link = 4;
+  static constexpr std::uint8_t on_border = 1, link = 4;
   std::vector<std::uint8_t> vflags_;
   std::vector<std::uint64_t> ring_edges_; // ∂U (see ring_projects_one_to_one), from << 32 | to
   std::vector<H> around_;           // the survivor's incoming halfedges
   std::vector<Box> fresh_box_;
-  std::vector<std::uint32_t> near_; // slots a grid query found
-  std::vector<std::pair<std::uint32_t, std::uint64_t>> candidates_; // slot, new faces its box meets
+  std::vector<std::uint32_t> near_; // faces a grid query found
+  std::vector<std::pair<std::array<std::uint32_t, 3>, std::uint64_t>> candidates_; // corners, new faces its box meets
   std::vector<Fresh_plane> fresh_plane_;
   std::size_t exact_tests_ = 0; // faces_intersect calls (the filters decided the rest)
   Face_grid grid_;

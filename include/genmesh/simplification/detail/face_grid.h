@@ -42,9 +42,18 @@ class Face_grid {
     table_ = {};
     used_ = 0;
     version_.assign(faces, 0);
-    std::size_t cap = 16;
-    while (cap < faces / 16) cap *= 2; // a cell lists tens of faces; grown at load 1/2
-    table_.resize(cap);
+    version_.shrink_to_fit();
+    // Grown at load 1/2 from a small table: a cell lists about 80 faces at
+    // the first build (832k armadillo: 15k cells), so a table sized from the
+    // face count (faces / 16, until session 10) was a quarter full, 2 MB.
+    table_.resize(16);
+  }
+
+  // Cuts every cell's list to its size (after a build: what the growth
+  // policy reserved beyond it).
+  void shrink_to_fit() {
+    for (Bucket& b : table_)
+      if (b.key != empty) b.list.shrink_to_fit();
   }
 
   // Lists f with box b in every cell b overlaps; entries listed for f
@@ -52,27 +61,34 @@ class Face_grid {
   void insert(std::uint32_t f, const Box& b) {
     const std::uint8_t v = bump(f);
     for_cells(b, [&](std::uint64_t k, const Entry& e) {
-      auto& list = cell(k);
+      Bucket& c = cell(k);
+      auto& list = c.list;
       // A full list drops its stale entries before it grows: cells that no
       // query walks (where the guard decides without searching) would
       // otherwise keep every face's every listing. It grows by a quarter,
       // not twice (832k → 10%: 3 MB less at the peak, no slower).
       if (list.size() == list.capacity()) {
-        drop_stale(list);
+        drop_stale(c);
         if (list.size() == list.capacity()) list.reserve(list.size() + list.size() / 4 + 4);
       }
       list.push_back({f, static_cast<std::uint8_t>(v << 3 | e.flags), e.x, e.y, e.z});
     });
   }
 
-  // f is gone: its entries become stale.
-  void remove(std::uint32_t f) { bump(f); }
+  // f is gone for good: its entries become stale, and no query returns it
+  // again (its version is `gone`, which no entry has).
+  void remove(std::uint32_t f) { version_[f] = gone; }
+
+  // The face indices the grid was reset for.
+  std::size_t face_bound() const { return version_.size(); }
 
   // Appends to `out` every face listed in a cell b overlaps whose box's
   // part in that cell may meet b's, each face once (in the cell holding the
   // lowest corner of the two boxes' intersection, where both are listed);
   // may append a face whose box misses b (the bins are conservative), never
-  // misses one whose box meets b. Drops the stale entries it walks over.
+  // misses one whose box meets b. Drops the stale entries of a cell it walks
+  // once the cell has grown by an eighth since they were last dropped
+  // (reading every entry's version is a third of the walk's time).
   void query(const Box& b, std::vector<std::uint32_t>& out) {
     for_cells(b, [&](std::uint64_t key, const Entry& q) {
       Bucket* c = find(key);
@@ -86,17 +102,24 @@ class Face_grid {
       const std::uint32_t qw = q.x | q.y << 8 | q.z << 16;
       const std::uint32_t qhi = (qw & 0x0f0f0fu) | 0x101010u, qlo = (qw >> 4) & 0x0f0f0fu;
       auto& list = c->list;
-      std::size_t kept = 0;
-      const std::size_t n = list.size();
-      for (std::size_t i = 0; i < n; ++i) {
-        const Entry e = list[i];
-        if (version_[e.face] != e.flags >> 3) continue; // stale: dropped
-        list[kept++] = e;
+      auto meets = [&](const Entry& e) {
         const std::uint32_t w = e.x | e.y << 8 | e.z << 16;
         const std::uint32_t t = (qhi - ((w >> 4) & 0x0f0f0fu)) & (((w & 0x0f0f0fu) | 0x101010u) - qlo);
-        if ((e.flags & need) == need && (t & 0x101010u) == 0x101010u) out.push_back(e.face);
+        return (e.flags & need) == need && (t & 0x101010u) == 0x101010u;
+      };
+      if (list.size() > c->clean + c->clean / 8) {
+        std::size_t kept = 0;
+        for (const Entry e : list) {
+          if (!current(e)) continue; // stale: dropped
+          list[kept++] = e;
+          if (meets(e)) out.push_back(e.face);
+        }
+        list.resize(kept);
+        c->clean = static_cast<std::uint32_t>(kept);
+      } else {
+        for (const Entry e : list)
+          if (meets(e) && current(e)) out.push_back(e.face);
       }
-      list.resize(kept);
     });
   }
 
@@ -113,15 +136,20 @@ class Face_grid {
   struct Bucket {
     std::uint64_t key = empty;
     std::vector<Entry> list;
+    std::uint32_t clean = 0; // the list's size when its stale entries were last dropped
   };
   static constexpr std::uint64_t empty = ~std::uint64_t{0};
+  static constexpr std::uint8_t gone = 0x80; // a removed face's version: above every entry's (5 bits)
 
 
-  void drop_stale(std::vector<Entry>& list) const {
+  bool current(const Entry& e) const { return version_[e.face] == e.flags >> 3; }
+
+  void drop_stale(Bucket& c) const {
     std::size_t kept = 0;
-    for (const Entry& e : list)
-      if (version_[e.face] == e.flags >> 3) list[kept++] = e;
-    list.resize(kept);
+    for (const Entry& e : c.list)
+      if (current(e)) c.list[kept++] = e;
+    c.list.resize(kept);
+    c.clean = static_cast<std::uint32_t>(kept);
   }
 
   std::uint8_t bump(std::uint32_t f) { return version_[f] = static_cast<std::uint8_t>((version_[f] + 1) & 31); }
@@ -196,10 +224,10 @@ class Face_grid {
       if (table_[i].key == empty) return nullptr;
     }
   }
-  std::vector<Entry>& cell(std::uint64_t k) {
+  Bucket& cell(std::uint64_t k) {
     std::size_t mask = table_.size() - 1;
     for (std::size_t i = hash(k) & mask;; i = (i + 1) & mask) {
-      if (table_[i].key == k) return table_[i].list;
+      if (table_[i].key == k) return table_[i];
       if (table_[i].key == empty) {
         if (2 * (used_ + 1) > table_.size()) {
           grow();
@@ -207,7 +235,7 @@ class Face_grid {
         }
         ++used_;
         table_[i].key = k;
-        return table_[i].list;
+        return table_[i];
       }
     }
   }
@@ -221,6 +249,7 @@ class Face_grid {
       while (table_[i].key != empty) i = (i + 1) & mask;
       table_[i].key = b.key;
       table_[i].list = std::move(b.list);
+      table_[i].clean = b.clean;
     }
   }
 
