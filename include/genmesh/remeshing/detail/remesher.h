@@ -665,7 +665,25 @@ public:
       // The queries' start triangles and states a few vertices ahead: they
       // follow the tree's leaf order, the states are scattered by vertex
       // index.
-      constexpr std::size_t ahead = 8;
+      // Projected a batch at a time: the tree interleaves the batch's
+      // searches (each independent of the others, so the same points).
+      constexpr std::size_t ahead = 8, batch = 16;
+      V bv[batch];
+      Eigen::Vector3d bq[batch], bon[batch], bout[batch];
+      std::size_t btri[batch];
+      double* bval[batch];
+      std::size_t m = 0;
+      auto flush = [&] {
+        ref_->project(std::span<const Eigen::Vector3d>(bq, m), std::span<const Eigen::Vector3d>(bon, m),
+                      std::span<std::size_t>(btri, m), std::span<double* const>(bval, m),
+                      std::span<Eigen::Vector3d>(bout, m));
+        for (std::size_t j = 0; j < m; ++j) {
+          on_[vid(bv[j])] = bout[j];
+          on_triangle_[vid(bv[j])] = btri[j];
+          set_pt(bv[j], bout[j]);
+        }
+        m = 0;
+      };
       for (std::size_t i = 0; i < order.size(); ++i) {
         if (i + ahead < order.size()) {
           const std::uint32_t w = vid(order[i + ahead]);
@@ -676,11 +694,14 @@ public:
         }
         const V v = order[i];
         if (vflag_at(v) & v_fixed) continue;
-        const Eigen::Vector3d p = to_eigen(from_eigen<point_t<G>>(pos[i])); // as the mesh stores it
-        Eigen::Vector3d& on = on_[vid(v)];
-        on = ref_->project(p, on, on_triangle_[vid(v)], sizing_.empty() ? nullptr : &sizing_[vid(v)]);
-        set_pt(v, on);
+        bv[m] = v;
+        bq[m] = to_eigen(from_eigen<point_t<G>>(pos[i])); // as the mesh stores it
+        bon[m] = on_[vid(v)];
+        btri[m] = on_triangle_[vid(v)];
+        bval[m] = sizing_.empty() ? nullptr : &sizing_[vid(v)];
+        if (++m == batch) flush();
       }
+      flush();
       // Vertices without edges are not smoothed, but project() moves them.
       for (auto v : vertices(g_))
         if (halfedge(v, g_) == null_h() && !(vflag_at(v) & v_fixed)) project_vertex(v);
