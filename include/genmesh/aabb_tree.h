@@ -241,7 +241,7 @@ public:
         for (std::size_t i = 0; i < m; ++i) {
           if (!live[i]) continue;
           if (walk_step(w[i])) {
-            prefetch_node(w[i].n);
+            if (w[i].n != npos) prefetch_node(w[i].n);
           } else {
             live[i] = false;
             --active;
@@ -564,8 +564,12 @@ private:
     float qf[3];
     float eps;
     float bound;
-    std::uint32_t n;  // the node to open next
+    std::uint32_t n;  // the node to open next (npos: none)
+    float nd;         // its box distance
     int sp;
+    int np;           // triangles within reach of the last node opened, not yet tested
+    std::uint32_t pending[4];
+    float pending_d[4];
     Stack_entry stack[stack_size];
   };
 
@@ -584,29 +588,43 @@ private:
     w.eps = (coord_max_ + std::max({std::abs(w.qf[0]), std::abs(w.qf[1]), std::abs(w.qf[2])})) * 0x1p-20f;
     w.bound = bound_up(s.best_d);
     w.n = 0;
+    w.nd = 0;
     w.sp = 0;
+    w.np = 0;
     return true;
   }
 
-  // Opens node w.n: tests its triangles within reach, stacks its nodes
-  // within reach, and sets w.n to the next node to open; false when none is
-  // left (the search is over).
+  // Tests the triangles the last step found within reach (prefetched
+  // then), in their order, as search() always did right after finding them;
+  // then opens node w.n (unless these tests put it out of reach: then the
+  // next one on the stack): stacks its nodes within reach, prefetches and
+  // keeps its triangles within reach for the next step, and sets w.n to the
+  // next node; false when nothing is left. Each query's tests come in the
+  // same order as when every triangle was tested on sight, so the answers
+  // are the same (a node stacked under a bound its triangles then lower is
+  // dropped when popped, as before).
   bool walk_step(Walk& w) const {
     Search& s = *w.s;
     const Eigen::Vector3d& q = *w.q;
+    for (int i = 0; i < w.np; ++i)
+      if (w.pending_d[i] <= w.bound) {
+        test_triangle(q, w.pending[i], s);
+        w.bound = bound_up(s.best_d);
+      }
+    w.np = 0;
+    if (w.nd > w.bound && !pop(w)) return false;
     const Node& node = nodes_[w.n];
     float d[4];
     const unsigned reach = child_distances(node, w.qf, w.eps, w.bound, d);
     if (reach && !(reach & (reach - 1))) {  // one child within reach (the common case near the answer)
-      const std::uint32_t ch = node.child[std::countr_zero(reach)];
+      const int c = std::countr_zero(reach);
+      const std::uint32_t ch = node.child[c];
       if (!(ch & tri_bit)) {
         w.n = ch;
+        w.nd = d[c];
         return true;
       }
-      if ((ch & ~tri_bit) != s.tested) {
-        test_triangle(q, ch & ~tri_bit, s);
-        w.bound = bound_up(s.best_d);
-      }
+      if ((ch & ~tri_bit) != s.tested) keep(w, ch & ~tri_bit, d[c]);
     }
     // The children within reach, nearest first (insertion sort of <= 4).
     int order[4], m = 0;
@@ -617,28 +635,44 @@ private:
         for (; j > 0 && d[order[j - 1]] > d[c]; --j) order[j] = order[j - 1];
         order[j] = c;
       }
-    // Triangles now, nearest first (each may lower the bound) ...
+    // Triangles for the next step, nearest first ...
     for (int i = 0; i < m; ++i) {
       const std::uint32_t ch = node.child[order[i]];
-      if ((ch & tri_bit) && d[order[i]] <= w.bound && (ch & ~tri_bit) != s.tested) {
-        test_triangle(q, ch & ~tri_bit, s);
-        w.bound = bound_up(s.best_d);
-      }
+      if ((ch & tri_bit) && (ch & ~tri_bit) != s.tested) keep(w, ch & ~tri_bit, d[order[i]]);
     }
     // ... nodes onto the stack, the nearest on top.
     for (int i = m; i-- > 0;) {
       const std::uint32_t ch = node.child[order[i]];
       if (!(ch & tri_bit) && d[order[i]] <= w.bound) w.stack[w.sp++] = {d[order[i]], ch};
     }
-    // Pop the next node still within reach.
-    for (;;) {
-      if (w.sp == 0) return false;
+    if (pop(w)) return true;
+    w.n = npos;
+    w.nd = inf_f;
+    return w.np != 0;  // the kept triangles are still to be tested
+  }
+
+  // A triangle within reach of the node just opened, tested at the next step.
+  void keep(Walk& w, std::uint32_t t, float d) const {
+#if defined(__GNUC__)
+    const char* p = reinterpret_cast<const char*>(&tris_[t]);
+    __builtin_prefetch(p);
+    __builtin_prefetch(p + sizeof(Tri) - 1);
+#endif
+    w.pending[w.np] = t;
+    w.pending_d[w.np++] = d;
+  }
+
+  // The next stacked node still within reach into w.n; false when none.
+  static bool pop(Walk& w) {
+    while (w.sp != 0) {
       const Stack_entry e = w.stack[--w.sp];
       if (e.d <= w.bound) {
         w.n = e.node;
+        w.nd = e.d;
         return true;
       }
     }
+    return false;
   }
 
   void prefetch_node(std::uint32_t n) const {
