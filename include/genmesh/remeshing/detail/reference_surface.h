@@ -30,6 +30,7 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace genmesh::detail::remeshing {
@@ -109,14 +110,48 @@ public:
     if (tree_->empty() || !q.allFinite()) return q;
     const double d2 = (q - on).squaredNorm();
     if (std::isfinite(d2)) {
-      // A little slack: `on` is a computed point of a triangle, not exactly on it.
-      const double r = std::sqrt(d2) * (1 + 1e-9) + slack_;
       // The previous triangle is tested first and bounds the rest.
-      const auto c = tree_->closest_point_from(q, r * r, triangle);
+      const auto c = tree_->closest_point_from(q, squared_bound(d2), triangle);
       // Nothing that near: face is null_face().
       if (c.face != boost::graph_traits<G>::null_face()) return answer(q, c, triangle, value);
     }
     return answer(q, tree_->closest_point(q), triangle, value);
+  }
+
+  /// project(q[i], on[i], triangle[i], value[i]) into out[i] for every i
+  /// (spans of one length; value[i] may be null): the same points, with the
+  /// tree's searches interleaved (Aabb_tree::closest_points_from).
+  void project(std::span<const Eigen::Vector3d> q, std::span<const Eigen::Vector3d> on,
+               std::span<std::size_t> triangle, std::span<double* const> value, std::span<Eigen::Vector3d> out) const {
+    constexpr std::size_t width = 16;
+    std::size_t index[width], m = 0;
+    Eigen::Vector3d bq[width];
+    double bound[width];
+    std::size_t start[width];
+    typename Aabb_tree<G>::Closest found[width];
+    auto flush = [&] {
+      tree_->closest_points_from(std::span<const Eigen::Vector3d>(bq, m), std::span<const double>(bound, m),
+                                 std::span<const std::size_t>(start, m),
+                                 std::span<typename Aabb_tree<G>::Closest>(found, m));
+      for (std::size_t j = 0; j < m; ++j) {
+        const std::size_t i = index[j];
+        // Nothing within the bound: face is null_face().
+        out[i] = found[j].face != boost::graph_traits<G>::null_face()
+                     ? answer(q[i], found[j], triangle[i], value[i])
+                     : answer(q[i], tree_->closest_point(q[i]), triangle[i], value[i]);
+      }
+      m = 0;
+    };
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const double d2 = (q[i] - on[i]).squaredNorm();
+      if (tree_->empty() || !q[i].allFinite() || !std::isfinite(d2)) {
+        out[i] = project(q[i], on[i], triangle[i], value[i]);
+        continue;
+      }
+      index[m] = i, bq[m] = q[i], bound[m] = squared_bound(d2), start[m] = triangle[i];
+      if (++m == width) flush();
+    }
+    if (m != 0) flush();
   }
 
   /// A hint that project() will soon be called with this triangle.
@@ -130,6 +165,14 @@ public:
   std::size_t triangle_count() const { return tree_->triangle_count(); }
 
 private:
+  // The search bound through `on`, at squared distance d2 from the query,
+  // with a little slack: `on` is a computed point of a triangle, not exactly
+  // on it.
+  double squared_bound(double d2) const {
+    const double r = std::sqrt(d2) * (1 + 1e-9) + slack_;
+    return r * r;
+  }
+
   // g's vertex index of corner i of indexed triangle t.
   std::size_t corner_index(const G& g, std::size_t t, int i) const {
     const auto c = tree_->triangle_corners(t)[static_cast<std::size_t>(i)];

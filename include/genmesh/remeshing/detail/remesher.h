@@ -47,6 +47,10 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -119,6 +123,120 @@ private:
   std::size_t next_ = 0;
   std::priority_queue<Entry> heap_;
 };
+
+/// The sums of the area-weighted smoothing rule over the closed ring of a
+/// vertex at p whose neighbours are nb(0), …, nb(k − 1) in ring order, in
+/// coordinates relative to p (see Remesher::relaxation_move): s = Σ |d|,
+/// m = Σ d dᵀ / |d| (upper triangle), r = Σ (|d| a′ − d (d·a′) / |d|),
+/// n = Σ d × a′, over the ring's edges d = c − a (a′ = a − p, c′ = c − p).
+struct Relaxation_sums {
+  double s = 0, m00 = 0, m01 = 0, m02 = 0, m11 = 0, m12 = 0, m22 = 0, r0 = 0, r1 = 0, r2 = 0, n0 = 0, n1 = 0, n2 = 0;
+};
+
+/// Relaxation_sums on plain scalars, one pass over the ring, each neighbour
+/// read once (Eigen's 3-vectors cost twice the instructions here).
+template <class Neighbour>
+Relaxation_sums relaxation_sums_scalar(const Eigen::Vector3d& p, std::uint32_t k, Neighbour& nb) {
+  Relaxation_sums o;
+  const double px = p.x(), py = p.y(), pz = p.z();
+  const Eigen::Vector3d& first = nb(0);
+  const double fx = first.x() - px, fy = first.y() - py, fz = first.z() - pz;
+  double ax = fx, ay = fy, az = fz;
+  for (std::uint32_t j = 0; j < k; ++j) {
+    double cx = fx, cy = fy, cz = fz;
+    if (j + 1 < k) {
+      const Eigen::Vector3d& c = nb(j + 1);
+      cx = c.x() - px, cy = c.y() - py, cz = c.z() - pz;
+    }
+    const double dx = cx - ax, dy = cy - ay, dz = cz - az;
+    o.n0 += dy * az - dz * ay, o.n1 += dz * ax - dx * az, o.n2 += dx * ay - dy * ax; // d × a'
+    const double l2 = dx * dx + dy * dy + dz * dz;
+    if (l2 > 0) {
+      const double l = std::sqrt(l2), w = 1.0 / l;
+      o.s += l;
+      const double wx = w * dx, wy = w * dy, wz = w * dz;
+      o.m00 += wx * dx, o.m01 += wx * dy, o.m02 += wx * dz;
+      o.m11 += wy * dy, o.m12 += wy * dz, o.m22 += wz * dz;
+      const double t = wx * ax + wy * ay + wz * az; // w (d·a')
+      o.r0 += l * ax - t * dx, o.r1 += l * ay - t * dy, o.r2 += l * az - t * dz;
+    }
+    ax = cx, ay = cy, az = cz;
+  }
+  return o;
+}
+
+#if defined(__SSE2__)
+/// relaxation_sums_scalar's operations, two components to a register where
+/// the formulas pair up (x with y; m00 with m11, m01 with m12, m02 with m22;
+/// r0 with r1; n0 with n1): each lane rounds as the scalar code does, so the
+/// bits are the same (tests/test_remeshing.cpp checks it on real rings); 13
+/// accumulators in 8 registers, where the compiler spilled 10 of the scalar
+/// ones to the stack (armadillo: relaxation_move 287 → 249 M instructions,
+/// the run −7 %; docs/benchmarks.md, session 10).
+template <class Neighbour>
+Relaxation_sums relaxation_sums_sse2(const Eigen::Vector3d& p, std::uint32_t k, Neighbour& nb) {
+  const __m128d pxy = _mm_loadu_pd(p.data()), pz = _mm_load_sd(p.data() + 2);
+  const __m128d zero = _mm_setzero_pd(), one = _mm_set_sd(1.0);
+  // Lane 0 of a "z" register is the z component; (x, y) registers hold two.
+  const Eigen::Vector3d& first = nb(0);
+  const __m128d fxy = _mm_sub_pd(_mm_loadu_pd(first.data()), pxy);
+  const __m128d fz = _mm_sub_sd(_mm_load_sd(first.data() + 2), pz);
+  __m128d axy = fxy, az = fz;
+  __m128d n01 = zero, n2v = zero, sv = zero, m0011 = zero, m0112 = zero, m0222 = zero, r01 = zero, r2v = zero;
+  for (std::uint32_t j = 0; j < k; ++j) {
+    __m128d cxy = fxy, cz = fz;
+    if (j + 1 < k) {
+      const Eigen::Vector3d& c = nb(j + 1);
+      cxy = _mm_sub_pd(_mm_loadu_pd(c.data()), pxy);
+      cz = _mm_sub_sd(_mm_load_sd(c.data() + 2), pz);
+    }
+    const __m128d dxy = _mm_sub_pd(cxy, axy), dz = _mm_sub_sd(cz, az);
+    const __m128d dyz = _mm_shuffle_pd(dxy, dz, 1); // (dy, dz)
+    // (n0, n1) += (dy az − dz ay, dz ax − dx az); n2 += dx ay − dy ax
+    n01 = _mm_add_pd(n01, _mm_sub_pd(_mm_mul_pd(dyz, _mm_shuffle_pd(az, axy, 0)),
+                                     _mm_mul_pd(_mm_shuffle_pd(dz, dxy, 0), _mm_shuffle_pd(axy, az, 1))));
+    const __m128d cr = _mm_mul_pd(dxy, _mm_shuffle_pd(axy, axy, 1)); // (dx ay, dy ax)
+    n2v = _mm_add_sd(n2v, _mm_sub_sd(cr, _mm_unpackhi_pd(cr, cr)));
+    const __m128d sq = _mm_mul_pd(dxy, dxy);
+    const __m128d l2 = _mm_add_sd(_mm_add_sd(sq, _mm_unpackhi_pd(sq, sq)), _mm_mul_sd(dz, dz));
+    if (_mm_comigt_sd(l2, zero)) {
+      const __m128d l = _mm_sqrt_sd(l2, l2), w = _mm_div_sd(one, l);
+      sv = _mm_add_sd(sv, l);
+      const __m128d wxy = _mm_mul_pd(_mm_unpacklo_pd(w, w), dxy), wz = _mm_mul_sd(w, dz);
+      m0011 = _mm_add_pd(m0011, _mm_mul_pd(wxy, dxy));                                          // wx dx, wy dy
+      m0112 = _mm_add_pd(m0112, _mm_mul_pd(wxy, dyz));                                          // wx dy, wy dz
+      m0222 = _mm_add_pd(m0222, _mm_mul_pd(_mm_unpacklo_pd(wxy, wz), _mm_unpacklo_pd(dz, dz))); // wx dz, wz dz
+      const __m128d ta = _mm_mul_pd(wxy, axy);
+      const __m128d t = _mm_add_sd(_mm_add_sd(ta, _mm_unpackhi_pd(ta, ta)), _mm_mul_sd(wz, az)); // w (d·a')
+      r01 = _mm_add_pd(r01, _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(l, l), axy), _mm_mul_pd(_mm_unpacklo_pd(t, t), dxy)));
+      r2v = _mm_add_sd(r2v, _mm_sub_sd(_mm_mul_sd(l, az), _mm_mul_sd(t, dz)));
+    }
+    axy = cxy, az = cz;
+  }
+  Relaxation_sums o;
+  double out[2];
+  o.s = _mm_cvtsd_f64(sv);
+  _mm_storeu_pd(out, m0011), o.m00 = out[0], o.m11 = out[1];
+  _mm_storeu_pd(out, m0112), o.m01 = out[0], o.m12 = out[1];
+  _mm_storeu_pd(out, m0222), o.m02 = out[0], o.m22 = out[1];
+  _mm_storeu_pd(out, r01), o.r0 = out[0], o.r1 = out[1];
+  o.r2 = _mm_cvtsd_f64(r2v);
+  _mm_storeu_pd(out, n01), o.n0 = out[0], o.n1 = out[1];
+  o.n2 = _mm_cvtsd_f64(n2v);
+  return o;
+}
+#endif
+
+/// Relaxation_sums: packed where SSE2 is available, else on scalars (the
+/// same bits either way).
+template <class Neighbour>
+Relaxation_sums relaxation_sums(const Eigen::Vector3d& p, std::uint32_t k, Neighbour& nb) {
+#if defined(__SSE2__)
+  return relaxation_sums_sse2(p, k, nb);
+#else
+  return relaxation_sums_scalar(p, k, nb);
+#endif
+}
 
 template <Remeshable G, class Visitor = Mutation_visitor>
 class Remesher {
@@ -661,7 +779,25 @@ public:
       // The queries' start triangles and states a few vertices ahead: they
       // follow the tree's leaf order, the states are scattered by vertex
       // index.
-      constexpr std::size_t ahead = 8;
+      // Projected a batch at a time: the tree interleaves the batch's
+      // searches (each independent of the others, so the same points).
+      constexpr std::size_t ahead = 8, batch = 16;
+      V bv[batch];
+      Eigen::Vector3d bq[batch], bon[batch], bout[batch];
+      std::size_t btri[batch];
+      double* bval[batch];
+      std::size_t m = 0;
+      auto flush = [&] {
+        ref_->project(std::span<const Eigen::Vector3d>(bq, m), std::span<const Eigen::Vector3d>(bon, m),
+                      std::span<std::size_t>(btri, m), std::span<double* const>(bval, m),
+                      std::span<Eigen::Vector3d>(bout, m));
+        for (std::size_t j = 0; j < m; ++j) {
+          on_[vid(bv[j])] = bout[j];
+          on_triangle_[vid(bv[j])] = btri[j];
+          set_pt(bv[j], bout[j]);
+        }
+        m = 0;
+      };
       for (std::size_t i = 0; i < order.size(); ++i) {
         if (i + ahead < order.size()) {
           const std::uint32_t w = vid(order[i + ahead]);
@@ -672,11 +808,14 @@ public:
         }
         const V v = order[i];
         if (vflag_at(v) & v_fixed) continue;
-        const Eigen::Vector3d p = to_eigen(from_eigen<point_t<G>>(pos[i])); // as the mesh stores it
-        Eigen::Vector3d& on = on_[vid(v)];
-        on = ref_->project(p, on, on_triangle_[vid(v)], sizing_.empty() ? nullptr : &sizing_[vid(v)]);
-        set_pt(v, on);
+        bv[m] = v;
+        bq[m] = to_eigen(from_eigen<point_t<G>>(pos[i])); // as the mesh stores it
+        bon[m] = on_[vid(v)];
+        btri[m] = on_triangle_[vid(v)];
+        bval[m] = sizing_.empty() ? nullptr : &sizing_[vid(v)];
+        if (++m == batch) flush();
       }
+      flush();
       // Vertices without edges are not smoothed, but project() moves them.
       for (auto v : vertices(g_))
         if (halfedge(v, g_) == null_h() && !(vflag_at(v) & v_fixed)) project_vertex(v);
@@ -710,36 +849,12 @@ public:
       // A = Σ w (|d|² I − d dᵀ), rhs = Σ w (|d|² a − d (d·a)),
       // w = 1/|d|; A symmetric, solved by its adjugate. In coordinates
       // relative to p (a' = a − p; A does not change, and x is the move
-      // itself), on plain scalars: one pass over the ring for the normal
-      // and the system, each neighbour read once (Eigen's 3-vectors cost
-      // twice the instructions here).
-      const double px = p.x(), py = p.y(), pz = p.z();
-      double s = 0, m00 = 0, m01 = 0, m02 = 0, m11 = 0, m12 = 0, m22 = 0, r0 = 0, r1 = 0, r2 = 0;
-      double n0 = 0, n1 = 0, n2 = 0;
-      const Eigen::Vector3d& first = nb(0);
-      const double fx = first.x() - px, fy = first.y() - py, fz = first.z() - pz;
-      double ax = fx, ay = fy, az = fz;
-      for (std::uint32_t j = 0; j < k; ++j) {
-        double cx = fx, cy = fy, cz = fz;
-        if (j + 1 < k) {
-          const Eigen::Vector3d& c = nb(j + 1);
-          cx = c.x() - px, cy = c.y() - py, cz = c.z() - pz;
-        }
-        const double dx = cx - ax, dy = cy - ay, dz = cz - az;
-        n0 += dy * az - dz * ay, n1 += dz * ax - dx * az, n2 += dx * ay - dy * ax; // d × a'
-        const double l2 = dx * dx + dy * dy + dz * dz;
-        if (l2 > 0) {
-          const double l = std::sqrt(l2), w = 1.0 / l;
-          s += l;
-          const double wx = w * dx, wy = w * dy, wz = w * dz;
-          m00 += wx * dx, m01 += wx * dy, m02 += wx * dz;
-          m11 += wy * dy, m12 += wy * dz, m22 += wz * dz;
-          const double t = wx * ax + wy * ay + wz * az; // w (d·a')
-          r0 += l * ax - t * dx, r1 += l * ay - t * dy, r2 += l * az - t * dz;
-        }
-        ax = cx, ay = cy, az = cz;
-      }
-      normal = Eigen::Vector3d(n0, n1, n2);
+      // itself): one pass over the ring for the normal and the system
+      // (relaxation_sums).
+      const Relaxation_sums sums = relaxation_sums(p, k, nb);
+      const double s = sums.s, m00 = sums.m00, m01 = sums.m01, m02 = sums.m02, m11 = sums.m11, m12 = sums.m12,
+                   m22 = sums.m22, r0 = sums.r0, r1 = sums.r1, r2 = sums.r2;
+      normal = Eigen::Vector3d(sums.n0, sums.n1, sums.n2);
       const double a00 = s - m00, a11 = s - m11, a22 = s - m22, a01 = -m01, a02 = -m02, a12 = -m12;
       const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
       const double det = a00 * c00 + a01 * c01 + a02 * c02;
