@@ -708,32 +708,52 @@ TEST(PointReader, ReadsTheMeshsPointsOnEveryBackend) {
 }
 
 // ---------------------------------------------------------------------------
-// Edges by index (HasNativeEdgeOfIndex, what simplify uses instead of an
-// array of descriptors): genmesh_native_edge(edge_index, g, i) is the
-// descriptor edges(g) yields for index i, with the same halfedge.
+// Edges and faces by index (HasNativeDescriptorOfIndex, what simplify uses
+// instead of arrays of descriptors): genmesh_native_descriptor(tag, g, i) is
+// the descriptor edges(g) / faces(g) yields for index i, with the same
+// halfedge.
 
-static_assert(genmesh::HasNativeEdgeOfIndex<genmesh_test::Halfedge_mesh> &&
-              genmesh::HasNativeEdgeOfIndex<genmesh_test::Surface_mesh> &&
-              genmesh::HasNativeEdgeOfIndex<genmesh_test::Incidence_mesh>);
-static_assert(!genmesh::HasNativeEdgeOfIndex<Polyhedron_with_ids> && !genmesh::HasNativeEdgeOfIndex<Om_tri>);
+using genmesh::edge_index_t, genmesh::face_index_t, genmesh::HasNativeDescriptorOfIndex;
+static_assert(HasNativeDescriptorOfIndex<genmesh_test::Halfedge_mesh, edge_index_t> &&
+              HasNativeDescriptorOfIndex<genmesh_test::Surface_mesh, edge_index_t> &&
+              HasNativeDescriptorOfIndex<genmesh_test::Incidence_mesh, edge_index_t>);
+static_assert(HasNativeDescriptorOfIndex<genmesh_test::Halfedge_mesh, face_index_t> &&
+              HasNativeDescriptorOfIndex<genmesh_test::Surface_mesh, face_index_t> &&
+              HasNativeDescriptorOfIndex<genmesh_test::Incidence_mesh, face_index_t> &&
+              HasNativeDescriptorOfIndex<Om_tri, face_index_t>);
+static_assert(!HasNativeDescriptorOfIndex<Polyhedron_with_ids, edge_index_t> &&
+              !HasNativeDescriptorOfIndex<Polyhedron_with_ids, face_index_t> &&
+              !HasNativeDescriptorOfIndex<Om_tri, edge_index_t>);
 
 template <class G>
-void check_edge_of_index(G g) {
+void check_descriptor_of_index(G g) {
   genmesh::build_mesh(genmesh::make_icosphere(2), g);
-  // Three edges gone (their indices stay holes): the others keep theirs.
+  // Three edges and two faces gone (their indices stay holes): the others
+  // keep theirs.
   ASSERT_TRUE(genmesh::collapse_edge(*std::next(edges(g).begin(), 7), g));
-  const auto idx = get(genmesh::edge_index, std::as_const(g));
-  for (auto e : edges(g)) {
-    const auto made = genmesh_native_edge(genmesh::edge_index, std::as_const(g), static_cast<std::size_t>(get(idx, e)));
-    EXPECT_EQ(made, e);
-    EXPECT_EQ(halfedge(made, g), halfedge(e, g));
+  if constexpr (HasNativeDescriptorOfIndex<G, edge_index_t>) {
+    const auto eidx = get(genmesh::edge_index, std::as_const(g));
+    for (auto e : edges(g)) {
+      const auto made = genmesh_native_descriptor(genmesh::edge_index, std::as_const(g),
+                                                  static_cast<std::size_t>(get(eidx, e)));
+      EXPECT_EQ(made, e);
+      EXPECT_EQ(halfedge(made, g), halfedge(e, g));
+    }
+  }
+  const auto fidx = get(genmesh::face_index, std::as_const(g));
+  for (auto f : faces(g)) {
+    const auto made = genmesh_native_descriptor(genmesh::face_index, std::as_const(g),
+                                                static_cast<std::size_t>(get(fidx, f)));
+    EXPECT_EQ(made, f);
+    EXPECT_EQ(halfedge(made, g), halfedge(f, g));
   }
 }
 
-TEST(EdgeOfIndex, IsTheDescriptorEdgesYields) {
-  check_edge_of_index(genmesh_test::Halfedge_mesh{});
-  check_edge_of_index(genmesh_test::Surface_mesh{});
-  check_edge_of_index(genmesh_test::Incidence_mesh{});
+TEST(DescriptorOfIndex, IsTheDescriptorEdgesAndFacesYield) {
+  check_descriptor_of_index(genmesh_test::Halfedge_mesh{});
+  check_descriptor_of_index(genmesh_test::Surface_mesh{});
+  check_descriptor_of_index(genmesh_test::Incidence_mesh{});
+  check_descriptor_of_index(Om_tri{}); // faces only
 }
 
 } // namespace

@@ -482,7 +482,9 @@ private:
   // (starting at the caller's bound) and its triangle.
   struct Search {
     double best_d;
-    Triangle_closest best_c{};
+    // Zeroed (Eigen leaves vectors uninitialized): a search that finds
+    // nothing copies it out beside a null face.
+    Triangle_closest best_c{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
     std::uint32_t best = npos;
     std::uint32_t tested = npos; // a triangle tested before the descent (closest_point_from's start)
   };

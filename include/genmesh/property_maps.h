@@ -83,17 +83,34 @@ concept HasIndexMap = requires(const G& g) {
   { index_bound(Tag{}, g) } -> std::convertible_to<std::size_t>;
 };
 
-/// A graph whose edge descriptors are made from their indices, through the
-/// native hook
-///   genmesh_native_edge(edge_index, g, i)   // const g, found by ADL
-/// returning the edge_descriptor of index i (a live edge's index, below
-/// index_bound(edge_index, g)): the descriptor edges(g) yields for it.
-/// An algorithm that keeps edges by index then needs no array of
-/// descriptors (4 bytes or more an edge). genmesh's meshes and
-/// CGAL::Surface_mesh (<genmesh/adaptors/cgal.h>) do.
+/// The descriptor type whose indices Tag names (the tags the hook below
+/// serves): edge_index_t → the edge_descriptor, face_index_t → the
+/// face_descriptor.
+template <class G, class Tag>
+struct descriptor_of_index;
 template <class G>
-concept HasNativeEdgeOfIndex = HasIndexMap<G, edge_index_t> && requires(const G& g, std::size_t i) {
-  { genmesh_native_edge(edge_index, g, i) } -> std::same_as<typename boost::graph_traits<G>::edge_descriptor>;
+struct descriptor_of_index<G, edge_index_t> {
+  using type = typename boost::graph_traits<G>::edge_descriptor;
+};
+template <class G>
+struct descriptor_of_index<G, face_index_t> {
+  using type = typename boost::graph_traits<G>::face_descriptor;
+};
+template <class G, class Tag>
+using descriptor_of_index_t = typename descriptor_of_index<G, Tag>::type;
+
+/// A graph whose Tag descriptors (Tag: edge_index_t or face_index_t) are
+/// made from their indices, through the native hook
+///   genmesh_native_descriptor(tag, g, i)   // const g, found by ADL
+/// returning the descriptor of index i (a live element's index, below
+/// index_bound(tag, g)): the one edges(g) / faces(g) yields for it.
+/// An algorithm that keeps elements by index then needs no array of
+/// descriptors (4 bytes or more an element). genmesh's meshes and
+/// CGAL::Surface_mesh (<genmesh/adaptors/cgal.h>) do for edges and faces,
+/// OpenMesh's (<genmesh/adaptors/openmesh.h>) for faces.
+template <class G, class Tag>
+concept HasNativeDescriptorOfIndex = HasIndexMap<G, Tag> && requires(const G& g, std::size_t i) {
+  { genmesh_native_descriptor(Tag{}, g, i) } -> std::same_as<descriptor_of_index_t<G, Tag>>;
 };
 
 namespace detail {

@@ -129,13 +129,20 @@ std::span<const P> genmesh_native_point_array(vertex_point_t, const CGAL::Surfac
   return {sm.points().data(), static_cast<std::size_t>(sm.num_vertices())};
 }
 
-/// Edge i's descriptor (HasNativeEdgeOfIndex, <genmesh/property_maps.h>):
-/// Surface_mesh's edge index i, made of halfedge 2i, as edges(sm) yields it.
+/// Edge and face i's descriptors (HasNativeDescriptorOfIndex,
+/// <genmesh/property_maps.h>): Surface_mesh's edge index i (made of
+/// halfedge 2i) and face index i, as edges(sm) and faces(sm) yield them.
 template <class P>
 typename boost::graph_traits<CGAL::Surface_mesh<P>>::edge_descriptor
-genmesh_native_edge(edge_index_t, const CGAL::Surface_mesh<P>&, std::size_t i) {
+genmesh_native_descriptor(edge_index_t, const CGAL::Surface_mesh<P>&, std::size_t i) {
   using E = typename boost::graph_traits<CGAL::Surface_mesh<P>>::edge_descriptor;
   return E(static_cast<typename E::size_type>(i));
+}
+template <class P>
+typename boost::graph_traits<CGAL::Surface_mesh<P>>::face_descriptor
+genmesh_native_descriptor(face_index_t, const CGAL::Surface_mesh<P>&, std::size_t i) {
+  using F = typename boost::graph_traits<CGAL::Surface_mesh<P>>::face_descriptor;
+  return F(static_cast<typename F::size_type>(i));
 }
 
 /// Surface_mesh indices are the descriptors' idx(): removed, not yet

@@ -114,4 +114,16 @@ GENMESH_OPENMESH_INDICES(OpenMesh::TriMesh_ArrayKernelT)
 #undef GENMESH_OPENMESH_INDICES
 #undef GENMESH_OPENMESH_INDEX
 
+/// Face i's handle (HasNativeDescriptorOfIndex, <genmesh/property_maps.h>):
+/// OpenMesh's handles are their indices. (Edges are not: CGAL's adaptor
+/// wraps a halfedge handle in its edge descriptor.)
+template <class K>
+OpenMesh::FaceHandle genmesh_native_descriptor(face_index_t, const OpenMesh::PolyMesh_ArrayKernelT<K>&, std::size_t i) {
+  return OpenMesh::FaceHandle(static_cast<int>(i));
+}
+template <class K>
+OpenMesh::FaceHandle genmesh_native_descriptor(face_index_t, const OpenMesh::TriMesh_ArrayKernelT<K>&, std::size_t i) {
+  return OpenMesh::FaceHandle(static_cast<int>(i));
+}
+
 } // namespace genmesh

@@ -93,11 +93,17 @@ template <template <class> class M, class P>
 std::span<const P> genmesh_native_point_array(vertex_point_t, const M<P>& m) {
   return m.point_array();
 }
-/// Edge i's descriptor (HasNativeEdgeOfIndex, <genmesh/property_maps.h>).
+/// Edge and face i's descriptors (HasNativeDescriptorOfIndex,
+/// <genmesh/property_maps.h>).
 template <template <class> class M, class P>
   requires detail::is_genmesh_mesh<M>
-Edge_index genmesh_native_edge(edge_index_t, const M<P>&, std::size_t i) {
+Edge_index genmesh_native_descriptor(edge_index_t, const M<P>&, std::size_t i) {
   return Edge_index(static_cast<Edge_index::size_type>(i));
+}
+template <template <class> class M, class P>
+  requires detail::is_genmesh_mesh<M>
+Face_index genmesh_native_descriptor(face_index_t, const M<P>&, std::size_t i) {
+  return Face_index(static_cast<Face_index::size_type>(i));
 }
 template <template <class> class M, class P>
   requires detail::is_genmesh_mesh<M>

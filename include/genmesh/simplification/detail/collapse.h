@@ -6,7 +6,7 @@
 // locked / on-a-feature-line flags
 // and a "has a refused edge" hint; per edge: refused and feature flags, the
 // queue's entry (a float cost and the key) and position, and the descriptor
-// where the mesh cannot make it from the index (HasNativeEdgeOfIndex); per face (with the self-intersection guard): its corners,
+// where the mesh cannot make it from the index (HasNativeDescriptorOfIndex); per face (with the self-intersection guard): its corners,
 // in a spatial hash. Collapse never adds elements, so
 // these are vectors sized once by the index bounds. Points are read from the
 // mesh's own array where it has one (HasNativePointArray: genmesh's meshes,
@@ -185,9 +185,9 @@ class Collapser {
   std::size_t fi(F f) const { return static_cast<std::size_t>(get(get(face_index, g_), f)); }
   // Edge k's descriptor: made from k where the mesh can (no array: 5 MB
   // less at 832k faces), else kept from edges(g).
-  static constexpr bool native_edges = HasNativeEdgeOfIndex<G>;
+  static constexpr bool native_edges = HasNativeDescriptorOfIndex<G, edge_index_t>;
   E edge_of(std::size_t k) const {
-    if constexpr (native_edges) return genmesh_native_edge(edge_index, g_, k);
+    if constexpr (native_edges) return genmesh_native_descriptor(edge_index, g_, k);
     else return edesc_[k];
   }
   bool border(H h) const { return face(h, g_) == boost::graph_traits<G>::null_face(); }
@@ -360,18 +360,10 @@ class Collapser {
         }
       }
       // The grid names faces by index; the descriptor is made from the index
-      // where it is its index (Halfedge_mesh, Incidence_mesh, Surface_mesh,
-      // OpenMesh), else face_h_ keeps a halfedge of each face.
-      faces_by_index_ = false;
-      if constexpr (std::is_constructible_v<F, std::uint32_t>) {
-        faces_by_index_ = true;
-        for (const F f : faces(g_))
-          if (!(F(static_cast<std::uint32_t>(fi(f))) == f)) {
-            faces_by_index_ = false;
-            break;
-          }
-      }
-      if (!faces_by_index_) {
+      // where the mesh can (HasNativeDescriptorOfIndex: Halfedge_mesh,
+      // Incidence_mesh, Surface_mesh, OpenMesh), else face_h_ keeps a
+      // halfedge of each face.
+      if constexpr (!native_faces) {
         face_h_.assign(fb, boost::graph_traits<G>::null_halfedge());
         for (const F f : faces(g_)) face_h_[fi(f)] = halfedge(f, g_);
       }
@@ -763,9 +755,8 @@ class Collapser {
 
   // A halfedge of live face f (an index).
   H face_halfedge(std::size_t f) const {
-    if constexpr (std::is_constructible_v<F, std::uint32_t>)
-      if (faces_by_index_) return halfedge(F(static_cast<std::uint32_t>(f)), g_);
-    return face_h_[f];
+    if constexpr (native_faces) return halfedge(genmesh_native_descriptor(face_index, g_, f), g_);
+    else return face_h_[f];
   }
 
   // The corners of the face of h (h: a → b in face (a, b, c)), read from the
@@ -825,7 +816,7 @@ class Collapser {
         const std::uint32_t is = static_cast<std::uint32_t>(vi(source(x, g_))),
                             iq = static_cast<std::uint32_t>(vi(q)),
                             iw = static_cast<std::uint32_t>(vi(target(next(x, g_), g_)));
-        if (!faces_by_index_) face_h_[sf] = x; // the face's old halfedge may be gone
+        if constexpr (!native_faces) face_h_[sf] = x; // the face's old halfedge may be gone
         if (!rebuild) grid_.insert(static_cast<std::uint32_t>(sf), Box::of(pos_[is], pos_[iq], pos_[iw]));
       }
       x = opposite(next(x, g_), g_);
@@ -1130,7 +1121,7 @@ class Collapser {
     // from the mesh in a loop of its own (nearly every read is a cache
     // miss; independent iterations let the processor overlap them).
     // (The grid lists live faces only.)
-    if (!faces_by_index_)
+    if constexpr (!native_faces)
       for (const std::uint32_t f : near_) prefetch(&face_h_[f]);
     std::erase_if(near_, [&](std::uint32_t f) {
       return (star_filter & filter_bit(f)) != 0 && std::find(star_faces_.begin(), star_faces_.end(), f) != star_faces_.end();
@@ -1617,13 +1608,14 @@ class Collapser {
   bool features_ = false;
   // The self-intersection guard: the grid, which lists each live face (by
   // index) with its exact box; the ring certificate and the candidates'
-  // tests read the corners of the faces it returns from the mesh. Where a
-  // face descriptor is not its index, face_h_ holds a halfedge of each face
+  // tests read the corners of the faces it returns from the mesh. Where the
+  // mesh cannot make a face descriptor from its index (native_faces), face_h_
+  // holds a halfedge of each face
   // (update_grid resets it for every face a collapse changes: the collapse
   // may remove the one it had). Until session 10 a 12-byte slot per face
   // held the corners (10 MB at 832k faces), for one read a face instead of
   // the mesh's few.
-  bool faces_by_index_ = false;
+  static constexpr bool native_faces = HasNativeDescriptorOfIndex<G, face_index_t>;
   std::vector<H> face_h_;
   std::vector<std::array<std::uint32_t, 3>> near_corners_; // near_'s faces not around p or q (corners)
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
