@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -143,6 +144,9 @@ class Face_grid {
     std::uint8_t flags;
     std::uint8_t x, y, z;
   };
+  // flags_and_bins reads the bytes after the face as one word.
+  static_assert(sizeof(Entry) == 8 && offsetof(Entry, flags) == 4 && offsetof(Entry, x) == 5 &&
+                offsetof(Entry, y) == 6 && offsetof(Entry, z) == 7);
   struct Bucket {
     std::uint64_t key = empty;
     std::vector<Entry> list;
