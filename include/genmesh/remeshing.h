@@ -93,8 +93,8 @@ Remeshing_result isotropic_remeshing(G& g, const Remeshing_options& options = {}
     // the clean-up decide the quality (armadillo: 8 % fewer instructions,
     // valence 6 share up, docs/benchmarks.md session 5).
     const bool last = i + 1 == options.iterations;
-    r.tangential_relaxation_and_project(last ? options.smoothing_steps : (options.smoothing_steps + 1) / 2);
-    r.remove_bad_triangles();
+    r.tangential_relaxation_project_and_remove_bad_triangles(last ? options.smoothing_steps
+                                                                  : (options.smoothing_steps + 1) / 2);
     ++r.result().iterations;
     visitor.on_step("iteration", static_cast<std::size_t>(i + 1), static_cast<std::size_t>(options.iterations));
   }

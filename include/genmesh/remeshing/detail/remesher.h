@@ -449,29 +449,52 @@ public:
   /// orientation (caps and slivers that the valence flips and smoothing left;
   /// pmp-library's remove_caps, widened). Two passes.
   std::size_t remove_bad_triangles() {
-    // 36°, the quality aimed at (issue 13): on armadillo after two Loop
-    // levels (832k faces) a threshold of 30° left 39 triangles below 36°,
-    // 36° leaves 20, at no measurable cost, valence 6 share unchanged
-    // (±0.1 %); which triangle is the worst stays chaotic
-    // (docs/benchmarks.md, session 4).
-    const double bad = std::cos(36.0 * std::numbers::pi / 180.0); // cos of the smallest angle we keep
     // The first pass looks only at the edges of triangles with an angle
     // below 36° (found without roots), the second at what the first changed.
-    const std::size_t n = flip_passes(
-        2,
-        [&](std::vector<int>& mark) {
-          for (auto f : faces(g_)) {
-            // From the canonical corner: the test's rounding must not depend on the backend.
-            const H h0 = detail::geom::canonical_halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
-            if (has_angle_below(pt(target(h0, g_)), pt(target(h1, g_)), pt(target(h2, g_)), bad * bad))
-              for (const H x : {h0, h1, h2}) mark[eid(x)] = 0;
-          }
-        },
-        [&](H h) {
-          const auto [before, after] = flip_max_cos(h);
-          return before > bad && after < before - 1e-9;
-        },
-        [](H) {});
+    return remove_bad_triangles([&](std::vector<int>& mark) {
+      for (auto f : faces(g_))
+        if (is_bad(f)) {
+          const H h0 = detail::geom::canonical_halfedge(f, g_);
+          for (const H x : {h0, next(h0, g_), prev(h0, g_)}) mark[eid(x)] = 0;
+        }
+    });
+  }
+
+  /// tangential_relaxation_and_project(steps), then remove_bad_triangles():
+  /// the same mesh. In the one-pass case the triangles below 36° are found
+  /// at the end of that pass, from its rings and its array of positions in
+  /// spatial order, instead of by a scan in face order that reads every
+  /// triangle's corners from scattered places (armadillo: that scan was 7 %
+  /// of remeshing's time; docs/benchmarks.md, session 11).
+  std::size_t tangential_relaxation_project_and_remove_bad_triangles(int steps) {
+    std::vector<std::uint32_t> bad_edges;
+    bool found = false;
+    if constexpr (std::is_same_v<Visitor, Mutation_visitor>) {
+      if (ref_ && o_.smoothing != Smoothing::none && steps > 0) {
+        tangential_relaxation(steps, true, &bad_edges);
+        found = true;
+      }
+    }
+    if (!found) {
+      tangential_relaxation_and_project(steps);
+      return remove_bad_triangles();
+    }
+    return remove_bad_triangles([&](std::vector<int>& mark) {
+      for (const std::uint32_t e : bad_edges) mark[e] = 0;
+    });
+  }
+
+  /// remove_bad_triangles() with its first pass's edges marked (0) by
+  /// first_marked(mark): those of the triangles below 36°.
+  template <class FirstMarked>
+  std::size_t remove_bad_triangles(FirstMarked&& first_marked) {
+    const double bad = bad_cos();
+    const std::size_t n = flip_passes(2, first_marked,
+                                      [&](H h) {
+                                        const auto [before, after] = flip_max_cos(h);
+                                        return before > bad && after < before - 1e-9;
+                                      },
+                                      [](H) {});
     result_.flips += n;
     return n;
   }
@@ -488,13 +511,8 @@ public:
   /// moved vertex ends on the input surface. At most 3 passes. Returns the
   /// vertices moved.
   std::size_t improve_min_angle() {
-    const double bad = std::cos(36.0 * std::numbers::pi / 180.0);
+    const double bad = bad_cos();
     grow();
-    auto is_bad = [&](F f) {
-      // From the canonical corner: the test's rounding must not depend on the backend.
-      const H h0 = detail::geom::canonical_halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
-      return has_angle_below(pt(target(h0, g_)), pt(target(h1, g_)), pt(target(h2, g_)), bad * bad);
-    };
     std::vector<F> todo; // bad triangles, by face index
     for (auto f : faces(g_))
       if (is_bad(f)) todo.push_back(f);
@@ -607,6 +625,24 @@ public:
     if (!sizing_.empty()) sizing_[vid(v)] = best_value;
     vis_->on_vertex_moved(v, std::as_const(g_));
     return true;
+  }
+
+  /// The cosine of the smallest angle remove_bad_triangles and
+  /// improve_min_angle keep. 36°, the quality aimed at (issue 13): on
+  /// armadillo after two Loop levels (832k faces) a threshold of 30° left 39
+  /// triangles below 36°, 36° leaves 20, at no measurable cost, valence 6
+  /// share unchanged (±0.1 %); which triangle is the worst stays chaotic
+  /// (docs/benchmarks.md, session 4).
+  static double bad_cos() { return std::cos(36.0 * std::numbers::pi / 180.0); }
+
+  /// Whether triangle f has an angle below 36°, tested from its canonical
+  /// corner (the test's rounding must not depend on the backend):
+  /// has_angle_below(p0, p1, p2) with p0 at the corner of the lowest vertex
+  /// index and p1, p2 after it in f's order.
+  bool is_bad(F f) const {
+    const H h0 = detail::geom::canonical_halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
+    const double bad = bad_cos();
+    return has_angle_below(pt(target(h0, g_)), pt(target(h1, g_)), pt(target(h2, g_)), bad * bad);
   }
 
   /// Whether triangle (a, b, c) has an angle below the one whose squared
@@ -731,8 +767,11 @@ public:
 
   /// As tangential_relaxation(), with `steps` steps instead of
   /// options.smoothing_steps; with and_project (only without an observing
-  /// visitor), projects as well (tangential_relaxation_and_project).
-  std::size_t tangential_relaxation(int steps, bool and_project = false) {
+  /// visitor), projects as well (tangential_relaxation_and_project), and
+  /// then, given bad_edges, appends to it the edges of the triangles below
+  /// 36° (remove_bad_triangles' first marks; an edge may come twice).
+  std::size_t tangential_relaxation(int steps, bool and_project = false,
+                                    std::vector<std::uint32_t>* bad_edges = nullptr) {
     if (o_.smoothing == Smoothing::none || steps <= 0) return 0;
     grow();
     // The topology does not change while smoothing: read each free vertex's
@@ -783,6 +822,7 @@ public:
       // searches (each independent of the others, so the same points).
       constexpr std::size_t ahead = 8, batch = 16;
       V bv[batch];
+      std::uint32_t bl[batch]; // their positions in order
       Eigen::Vector3d bq[batch], bon[batch], bout[batch];
       std::size_t btri[batch];
       double* bval[batch];
@@ -795,6 +835,7 @@ public:
           on_[vid(bv[j])] = bout[j];
           on_triangle_[vid(bv[j])] = btri[j];
           set_pt(bv[j], bout[j]);
+          pos[bl[j]] = pt(bv[j]);
         }
         m = 0;
       };
@@ -809,6 +850,7 @@ public:
         const V v = order[i];
         if (vflag_at(v) & v_fixed) continue;
         bv[m] = v;
+        bl[m] = static_cast<std::uint32_t>(i);
         bq[m] = to_eigen(from_eigen<point_t<G>>(pos[i])); // as the mesh stores it
         bon[m] = on_[vid(v)];
         btri[m] = on_triangle_[vid(v)];
@@ -819,6 +861,7 @@ public:
       // Vertices without edges are not smoothed, but project() moves them.
       for (auto v : vertices(g_))
         if (halfedge(v, g_) == null_h() && !(vflag_at(v) & v_fixed)) project_vertex(v);
+      if (bad_edges) append_bad_edges(order, pos, free_id, offset, ring, *bad_edges);
       return free_id.size();
     }
     for (const std::uint32_t i : free_id) {
@@ -826,6 +869,47 @@ public:
       vis_->on_vertex_moved(order[i], std::as_const(g_));
     }
     return free_id.size();
+  }
+
+  /// The edges of the triangles below 36° (is_bad) onto out, each triangle
+  /// tested once, at the corner of its lowest vertex index, with the same
+  /// arguments is_bad gives has_angle_below: for a free vertex from its ring
+  /// and the positions of tangential_relaxation (order, pos: every vertex
+  /// with edges in spatial order and its position as the mesh stores it;
+  /// free_id, offset, ring: the free vertices' closed rings, face j being
+  /// (ring[j], v, ring[j + 1])); for the others from the mesh. The edges of
+  /// a bad triangle are looked up in the mesh (few are bad).
+  void append_bad_edges(const std::vector<V>& order, const std::vector<Eigen::Vector3d>& pos,
+                        const std::vector<std::uint32_t>& free_id, const std::vector<std::uint32_t>& offset,
+                        const std::vector<std::uint32_t>& ring, std::vector<std::uint32_t>& out) const {
+    const double bad = bad_cos(), bad2 = bad * bad;
+    auto add = [&](H x) { // x: the halfedge of a bad triangle into its lowest corner
+      for (const H y : {x, next(x, g_), prev(x, g_)}) out.push_back(eid(y));
+    };
+    std::size_t f = 0; // free_id[f]: the next free vertex in order
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const V v = order[i];
+      const std::uint32_t vi = vid(v);
+      if (f < free_id.size() && free_id[f] == i) {
+        const std::uint32_t* r = ring.data() + offset[f];
+        const std::uint32_t k = offset[f + 1] - offset[f];
+        ++f;
+        for (std::uint32_t j = 0; j < k; ++j) {
+          const std::uint32_t a = r[j], c = r[j + 1 == k ? 0 : j + 1];
+          if (vid(order[a]) < vi || vid(order[c]) < vi || !has_angle_below(pos[i], pos[c], pos[a], bad2)) continue;
+          for_each_in_any_order(v, [&](H x) {
+            if (source(x, g_) == order[a]) add(x);
+          });
+        }
+        continue;
+      }
+      for_each_in_any_order(v, [&](H x) {
+        if (is_border(x)) return;
+        const V a = source(x, g_), c = target(next(x, g_), g_);
+        if (vid(a) < vi || vid(c) < vi || !has_angle_below(pt(v), pt(c), pt(a), bad2)) return;
+        add(x);
+      });
+    }
   }
 
   /// The tangential move of a free (inner) vertex at p whose ring
