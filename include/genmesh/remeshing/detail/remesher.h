@@ -1123,6 +1123,22 @@ private:
     } while (x != start);
   }
 
+  /// Whether pred(x) holds for every halfedge x into v, from halfedge(v);
+  /// stops at the first that fails (the rest of the walk is a chain of
+  /// loads that decides nothing: collapse attempts, most of which fail on
+  /// their first lengths, spent a third of their time there).
+  template <class Pred>
+  bool all_in_any_order(V v, Pred&& pred) const {
+    const H start = halfedge(v, g_);
+    if (start == null_h()) return true;
+    H x = start;
+    do {
+      if (!pred(x)) return false;
+      x = opposite(next(x, g_), g_);
+    } while (x != start);
+    return true;
+  }
+
   /// Calls f(x) for every halfedge x into v, from the canonical start: v's
   /// border halfedge if it has one, else the one of its lowest-numbered edge.
   template <class Fn>
@@ -1271,29 +1287,23 @@ private:
   bool collapse_geometry_ok(H h) const {
     const V x = source(h, g_), y = target(h, g_);
     const Eigen::Vector3d px = pt(x), py = pt(y);
-    bool ok = true;
     // The lengths first, around the whole ring: most attempts that fail,
     // fail here, before any of the normals below is computed.
-    for_each_in_any_order(x, [&](H in) {
-      if (!ok) return;
+    if (!all_in_any_order(x, [&](H in) {
+          const V a = source(in, g_);
+          return a == y || !((pt(a) - py).squaredNorm() > hi2(a, y));
+        }))
+      return false;
+    return all_in_any_order(x, [&](H in) {
       const V a = source(in, g_);
-      if (a != y && (pt(a) - py).squaredNorm() > hi2(a, y)) ok = false;
-    });
-    if (!ok) return false;
-    for_each_in_any_order(x, [&](H in) {
-      if (!ok) return;
-      const V a = source(in, g_);
-      if (a == y) return;
-      const Eigen::Vector3d pa = pt(a);
-      if (is_border(in)) return;
+      if (a == y || is_border(in)) return true;
       const V b = target(next(in, g_), g_);
-      if (b == y) return;
+      if (b == y) return true;
       // face(in) = (a, x, b) becomes (a, y, b).
-      const Eigen::Vector3d pb = pt(b);
+      const Eigen::Vector3d pa = pt(a), pb = pt(b);
       const Eigen::Vector3d before = triangle_normal(pa, px, pb), after = triangle_normal(pa, py, pb);
-      if (!(before.dot(after) > 0)) ok = false;
+      return before.dot(after) > 0;
     });
-    return ok;
   }
 
   int valence(V v) const {
