@@ -1335,18 +1335,22 @@ private:
       c = oh;
     }
     if (c == null_h()) return std::nullopt;
-    // The link condition (symmetric), after the cheaper geometric test passed.
-    if (!genmesh::can_collapse_edge(edge(h, g_), std::as_const(g_))) return std::nullopt;
     // collapse_edge removes x = source(c), c's edge, x–t on top and y–b at
     // the bottom (x–b survives as y–b): y–b's flags move to x–b's index.
     const H oc = opposite(c, g_);
     const bool bottom = !is_border(oc);
     const std::uint32_t kept = bottom ? eid(next(oc, g_)) : 0;
     const std::uint8_t kept_flag = bottom ? eflag(prev(oc, g_)) : 0;
-    for_each_in_any_order(source(c, g_), [&](H in) { ++stamp[eid(in)]; });
-    for_each_in_any_order(target(c, g_), [&](H in) { ++stamp[eid(in)]; });
+    // The edges at both ends change (their stamps are bumped once the
+    // collapse is done). collapse_edge tests the link condition (symmetric)
+    // and refuses without a change; testing it here first as well was a
+    // second walk of the rings and their neighbours per collapse.
+    boost::container::small_vector<std::uint32_t, 32> changed;
+    for_each_in_any_order(source(c, g_), [&](H in) { changed.push_back(eid(in)); });
+    for_each_in_any_order(target(c, g_), [&](H in) { changed.push_back(eid(in)); });
     const auto q = genmesh::collapse_edge(edge(c, g_), g_, *vis_);
     if (!q) return std::nullopt;
+    for (const std::uint32_t i : changed) ++stamp[i];
     if (bottom) eflag_[kept] = kept_flag;
     return *q;
   }
