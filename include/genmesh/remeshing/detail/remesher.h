@@ -465,13 +465,17 @@ public:
   /// at the end of that pass, from its rings and its array of positions in
   /// spatial order, instead of by a scan in face order that reads every
   /// triangle's corners from scattered places (armadillo: that scan was 7 %
-  /// of remeshing's time; docs/benchmarks.md, session 11).
-  std::size_t tangential_relaxation_project_and_remove_bad_triangles(int steps) {
-    std::vector<std::uint32_t> bad_edges;
+  /// of remeshing's time; docs/benchmarks.md, session 11). Then, given
+  /// still_bad, it is set to the triangles still below 36°, by face index
+  /// (bad_faces(), for improve_min_angle): among those found and those the
+  /// flips changed; left empty in the other case.
+  std::size_t tangential_relaxation_project_and_remove_bad_triangles(int steps,
+                                                                    std::optional<std::vector<F>>* still_bad = nullptr) {
+    std::vector<H> bad; // a halfedge of each triangle below 36°
     bool found = false;
     if constexpr (std::is_same_v<Visitor, Mutation_visitor>) {
       if (ref_ && o_.smoothing != Smoothing::none && steps > 0) {
-        tangential_relaxation(steps, true, &bad_edges);
+        tangential_relaxation(steps, true, &bad);
         found = true;
       }
     }
@@ -479,22 +483,40 @@ public:
       tangential_relaxation_and_project(steps);
       return remove_bad_triangles();
     }
-    return remove_bad_triangles([&](std::vector<int>& mark) {
-      for (const std::uint32_t e : bad_edges) mark[e] = 0;
-    });
+    std::vector<F> changed;
+    if (still_bad)
+      for (const H x : bad) changed.push_back(face(x, g_));
+    const std::size_t n = remove_bad_triangles(
+        [&](std::vector<int>& mark) {
+          for (const H x : bad)
+            for (const H y : {x, next(x, g_), prev(x, g_)}) mark[eid(y)] = 0;
+        },
+        [&](H h) {
+          if (still_bad) changed.insert(changed.end(), {face(h, g_), face(opposite(h, g_), g_)});
+        });
+    if (still_bad) {
+      // Positions do not change here: a triangle below 36° now was one
+      // before, or a flip made it.
+      std::sort(changed.begin(), changed.end(), [&](F x, F y) { return get(fi_, x) < get(fi_, y); });
+      changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+      std::erase_if(changed, [&](F f) { return !is_bad(f); });
+      *still_bad = std::move(changed);
+    }
+    return n;
   }
 
   /// remove_bad_triangles() with its first pass's edges marked (0) by
   /// first_marked(mark): those of the triangles below 36°.
-  template <class FirstMarked>
-  std::size_t remove_bad_triangles(FirstMarked&& first_marked) {
+  /// after(h) follows each flip (h is then the new edge).
+  template <class FirstMarked, class After = void (*)(H)>
+  std::size_t remove_bad_triangles(FirstMarked&& first_marked, After&& after = [](H) {}) {
     const double bad = bad_cos();
     const std::size_t n = flip_passes(2, first_marked,
                                       [&](H h) {
                                         const auto [before, after] = flip_max_cos(h);
                                         return before > bad && after < before - 1e-9;
                                       },
-                                      [](H) {});
+                                      after);
     result_.flips += n;
     return n;
   }
@@ -510,12 +532,20 @@ public:
   /// of the mesh never drops, constrained and fixed vertices stay, and every
   /// moved vertex ends on the input surface. At most 3 passes. Returns the
   /// vertices moved.
-  std::size_t improve_min_angle() {
+  std::size_t improve_min_angle() { return improve_min_angle(bad_faces()); }
+
+  /// The faces with an angle below 36° (is_bad), by face index.
+  std::vector<F> bad_faces() const {
+    std::vector<F> out;
+    for (auto f : faces(g_))
+      if (is_bad(f)) out.push_back(f);
+    return out;
+  }
+
+  /// improve_min_angle() given bad_faces() (todo).
+  std::size_t improve_min_angle(std::vector<F> todo) {
     const double bad = bad_cos();
     grow();
-    std::vector<F> todo; // bad triangles, by face index
-    for (auto f : faces(g_))
-      if (is_bad(f)) todo.push_back(f);
     std::vector<int> seen(index_bound(vertex_index, g_), 0);
     std::size_t moved = 0;
     for (int pass = 1; pass <= 3 && !todo.empty(); ++pass) {
@@ -768,10 +798,8 @@ public:
   /// As tangential_relaxation(), with `steps` steps instead of
   /// options.smoothing_steps; with and_project (only without an observing
   /// visitor), projects as well (tangential_relaxation_and_project), and
-  /// then, given bad_edges, appends to it the edges of the triangles below
-  /// 36° (remove_bad_triangles' first marks; an edge may come twice).
-  std::size_t tangential_relaxation(int steps, bool and_project = false,
-                                    std::vector<std::uint32_t>* bad_edges = nullptr) {
+  /// then, given bad, appends to it a halfedge of each triangle below 36°.
+  std::size_t tangential_relaxation(int steps, bool and_project = false, std::vector<H>* bad = nullptr) {
     if (o_.smoothing == Smoothing::none || steps <= 0) return 0;
     grow();
     // The topology does not change while smoothing: read each free vertex's
@@ -815,9 +843,8 @@ public:
         if (moved[i].allFinite()) pos[free_id[i]] = moved[i];
     }
     if (and_project) {
-      // The queries' start triangles and states a few vertices ahead: they
-      // follow the tree's leaf order, the states are scattered by vertex
-      // index.
+      // The queries' start triangles a few vertices ahead: they follow the
+      // tree's leaf order.
       // Projected a batch at a time: the tree interleaves the batch's
       // searches (each independent of the others, so the same points).
       constexpr std::size_t ahead = 8, batch = 16;
@@ -832,8 +859,7 @@ public:
                       std::span<std::size_t>(btri, m), std::span<double* const>(bval, m),
                       std::span<Eigen::Vector3d>(bout, m));
         for (std::size_t j = 0; j < m; ++j) {
-          on_[vid(bv[j])] = bout[j];
-          on_triangle_[vid(bv[j])] = btri[j];
+          on_triangle_[vid(bv[j])] = btri[j]; // known now: on_ is no longer read (Reference_surface::project)
           set_pt(bv[j], bout[j]);
           pos[bl[j]] = pt(bv[j]);
         }
@@ -843,17 +869,14 @@ public:
         if (i + ahead < order.size()) {
           const std::uint32_t w = vid(order[i + ahead]);
           ref_->prefetch(on_triangle_[w]);
-#if defined(__GNUC__)
-          __builtin_prefetch(&on_[w]);
-#endif
         }
         const V v = order[i];
         if (vflag_at(v) & v_fixed) continue;
         bv[m] = v;
         bl[m] = static_cast<std::uint32_t>(i);
         bq[m] = to_eigen(from_eigen<point_t<G>>(pos[i])); // as the mesh stores it
-        bon[m] = on_[vid(v)];
         btri[m] = on_triangle_[vid(v)];
+        bon[m] = btri[m] < ref_->triangle_count() ? bq[m] : on_[vid(v)]; // read only for an unknown triangle
         bval[m] = sizing_.empty() ? nullptr : &sizing_[vid(v)];
         if (++m == batch) flush();
       }
@@ -861,7 +884,7 @@ public:
       // Vertices without edges are not smoothed, but project() moves them.
       for (auto v : vertices(g_))
         if (halfedge(v, g_) == null_h() && !(vflag_at(v) & v_fixed)) project_vertex(v);
-      if (bad_edges) append_bad_edges(order, pos, free_id, offset, ring, *bad_edges);
+      if (bad) append_bad_triangles(order, pos, free_id, offset, ring, *bad);
       return free_id.size();
     }
     for (const std::uint32_t i : free_id) {
@@ -871,21 +894,19 @@ public:
     return free_id.size();
   }
 
-  /// The edges of the triangles below 36° (is_bad) onto out, each triangle
+  /// A halfedge of each triangle below 36° (is_bad) onto out, each triangle
   /// tested once, at the corner of its lowest vertex index, with the same
   /// arguments is_bad gives has_angle_below: for a free vertex from its ring
   /// and the positions of tangential_relaxation (order, pos: every vertex
   /// with edges in spatial order and its position as the mesh stores it;
   /// free_id, offset, ring: the free vertices' closed rings, face j being
-  /// (ring[j], v, ring[j + 1])); for the others from the mesh. The edges of
-  /// a bad triangle are looked up in the mesh (few are bad).
-  void append_bad_edges(const std::vector<V>& order, const std::vector<Eigen::Vector3d>& pos,
-                        const std::vector<std::uint32_t>& free_id, const std::vector<std::uint32_t>& offset,
-                        const std::vector<std::uint32_t>& ring, std::vector<std::uint32_t>& out) const {
+  /// (ring[j], v, ring[j + 1])); for the others from the mesh. The halfedge
+  /// of a bad triangle is looked up in the mesh (few are bad).
+  void append_bad_triangles(const std::vector<V>& order, const std::vector<Eigen::Vector3d>& pos,
+                            const std::vector<std::uint32_t>& free_id, const std::vector<std::uint32_t>& offset,
+                            const std::vector<std::uint32_t>& ring, std::vector<H>& out) const {
     const double bad = bad_cos(), bad2 = bad * bad;
-    auto add = [&](H x) { // x: the halfedge of a bad triangle into its lowest corner
-      for (const H y : {x, next(x, g_), prev(x, g_)}) out.push_back(eid(y));
-    };
+    auto add = [&](H x) { out.push_back(x); };
     std::size_t f = 0; // free_id[f]: the next free vertex in order
     for (std::size_t i = 0; i < order.size(); ++i) {
       const V v = order[i];
@@ -1553,7 +1574,7 @@ private:
   decltype(get(face_index, std::declval<const G&>())) fi_;
   double L_ = 0, hi2_ = 0, lo2_ = 0;
   std::vector<std::uint8_t> vflag_, eflag_;
-  std::vector<Eigen::Vector3d> on_; // each vertex's last point on the reference surface
+  std::vector<Eigen::Vector3d> on_; // a vertex's last point on the reference surface (read while on_triangle_ is npos)
   std::vector<std::size_t> on_triangle_; // and the reference triangle it lies in (npos: unknown)
   std::vector<double> sizing_;
   std::unique_ptr<Reference_surface<G>> ref_;
