@@ -1181,8 +1181,19 @@ class Collapser {
     std::erase_if(near_, [&](std::uint32_t f) {
       return (star_filter & filter_bit(f)) != 0 && std::find(star_faces_.begin(), star_faces_.end(), f) != star_faces_.end();
     });
+    // In stages, each a loop of independent reads (a face's halfedge, then
+    // its corners, then their points and flags asked for): one loop per face
+    // chains three dependent misses, and the processor overlaps only a few
+    // faces' chains.
+    near_h_.clear();
+    for (const std::uint32_t f : near_) near_h_.push_back(face_halfedge(f));
     near_corners_.clear();
-    for (const std::uint32_t f : near_) near_corners_.push_back(corners_of(face_halfedge(f)));
+    for (const H fh : near_h_) near_corners_.push_back(corners_of(fh));
+    for (const auto& v : near_corners_)
+      for (const std::uint32_t c : v) {
+        prefetch(pos_.address(c));
+        prefetch(&vflags_[c]);
+      }
     // With the ring certified, the new faces meet each other and every face
     // at a link vertex only in what they share: only the faces with no
     // corner in ring_ (p, q and the link) are left to test.
@@ -1204,8 +1215,6 @@ class Collapser {
     // The faces left (not around p or q), their points asked for; then
     // their boxes pick the candidates.
     candidates_.clear();
-    for (const auto& v : near_corners_)
-      for (const std::uint32_t c : v) prefetch(pos_.address(c));
     for (const auto& v : near_corners_) pick_candidate(v, all);
     const std::size_t nf = fresh_.size();
     for (const auto& [v, mask] : candidates_) {
@@ -1697,6 +1706,7 @@ class Collapser {
   Ahead ahead_;                     // the next edge's fans, walked ahead (see ahead_begin)
   std::vector<Box> fresh_box_;
   std::vector<std::uint32_t> near_; // faces a grid query found
+  std::vector<H> near_h_;           // a halfedge of each
   std::vector<std::pair<std::array<std::uint32_t, 3>, std::uint64_t>> candidates_; // corners, new faces its box meets
   std::vector<Fresh_plane> fresh_plane_;
   std::size_t exact_tests_ = 0; // faces_intersect calls (the filters decided the rest)
