@@ -786,13 +786,23 @@ private:
     }
   }
 
+  // The float nearest to x at or below (down) or above (up) it: the float
+  // conversion, stepped by one where it went the wrong way — what
+  // std::nextafter towards ∓infinity gives, by the bits (the library call
+  // was 6 % of a build).
   static float down(double x) {
-    float f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+    const float f = static_cast<float>(x);
+    if (!(static_cast<double>(f) > x)) return f;
+    if (f == 0) return -std::numeric_limits<float>::denorm_min();
+    const std::uint32_t b = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0 ? b - 1 : b + 1);
   }
   static float up(double x) {
-    float f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+    const float f = static_cast<float>(x);
+    if (!(static_cast<double>(f) < x)) return f;
+    if (f == 0) return std::numeric_limits<float>::denorm_min();
+    const std::uint32_t b = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f < 0 ? b - 1 : b + 1);
   }
 
   // One triangle's float box, for the build only (its centre, the sort key,

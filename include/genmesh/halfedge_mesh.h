@@ -189,6 +189,18 @@ public:
     return {};
   }
 
+  /// Hints that h's links (next, prev, target, face; its opposite's share
+  /// their cache lines) will be read soon: a cache prefetch, nothing else.
+  void prefetch(Halfedge_index h) const { hlinks_.prefetch(h.idx()); }
+  /// Hints that halfedge(v) will be read soon.
+  void prefetch(Vertex_index v) const {
+#if defined(__GNUC__) || defined(__clang__)
+    __builtin_prefetch(vhalfedge_.data() + v.idx());
+#else
+    (void)v;
+#endif
+  }
+
   /// opposite(next(h)): the next halfedge clockwise around target(h).
   [[nodiscard]] Halfedge_index next_around_target(Halfedge_index h) const { return opposite(next(h)); }
   /// prev(opposite(h)).
@@ -798,6 +810,16 @@ void set_face(Halfedge_index h, Face_index f, Halfedge_mesh<P>& m) {
 template <class P>
 void set_halfedge(Face_index f, Halfedge_index h, Halfedge_mesh<P>& m) {
   m.set_halfedge(f, h);
+}
+
+// Cache hints (genmesh::detail::prefetch_links, <genmesh/property_maps.h>).
+template <class P>
+void genmesh_native_prefetch_links(Halfedge_index h, const Halfedge_mesh<P>& m) {
+  m.prefetch(h);
+}
+template <class P>
+void genmesh_native_prefetch_links(Vertex_index v, const Halfedge_mesh<P>& m) {
+  m.prefetch(v);
 }
 
 // The claims of this header, checked where it is compiled.

@@ -113,7 +113,36 @@ concept HasNativeDescriptorOfIndex = HasIndexMap<G, Tag> && requires(const G& g,
   { genmesh_native_descriptor(Tag{}, g, i) } -> std::same_as<descriptor_of_index_t<G, Tag>>;
 };
 
+/// A graph that can hint a halfedge's links into the cache ahead of a walk,
+/// through the native hook
+///   genmesh_native_prefetch_links(h, g)   // const g, found by ADL
+/// (and genmesh_native_prefetch_links(v, g) for halfedge(v)): a prefetch of
+/// next(h), target(h), face(h) and opposite(h)'s, with no other effect; h
+/// may be any halfedge below the index bound, removed or not. An algorithm
+/// that knows which star it will walk next (simplify's queue) asks for it
+/// while it still works on the current one. Halfedge_mesh does.
+template <class G>
+concept HasNativePrefetch = requires(const G& g, typename boost::graph_traits<G>::halfedge_descriptor h,
+                                     typename boost::graph_traits<G>::vertex_descriptor v) {
+  genmesh_native_prefetch_links(h, g);
+  genmesh_native_prefetch_links(v, g);
+};
+
 namespace detail {
+
+/// A hint that the memory at p will be read soon (a cache prefetch).
+inline void prefetch([[maybe_unused]] const void* p) {
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#endif
+}
+
+/// Hints x's links into the cache (a halfedge's, or a vertex's halfedge)
+/// where g can (HasNativePrefetch); nothing otherwise.
+template <class G, class X>
+void prefetch_links([[maybe_unused]] X x, [[maybe_unused]] const G& g) {
+  if constexpr (HasNativePrefetch<G>) genmesh_native_prefetch_links(x, g);
+}
 
 /// g's points by vertex index as Eigen::Vector3d, for algorithms that read
 /// them in inner loops: the mesh's own array when it has one

@@ -56,8 +56,10 @@
 #include <genmesh/remeshing/tangential_relaxation.h>
 #include <genmesh/visitor.h>
 
+#include <optional>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace genmesh {
 
@@ -75,6 +77,8 @@ Remeshing_result isotropic_remeshing(G& g, const Remeshing_options& options = {}
   visitor.on_started(std::as_const(g));
   visitor.on_step("iteration", 0, static_cast<std::size_t>(options.iterations));
   if (options.projection) r.build_reference();
+  // The triangles below 36° after the last round, when its steps found them.
+  std::optional<std::vector<face_descriptor_t<G>>> still_bad;
   for (int i = 0; i < options.iterations; ++i) {
     // Splits append their elements in a spatially random order (a length
     // heap) and collapses leave holes: with options.renumber, where they
@@ -93,12 +97,12 @@ Remeshing_result isotropic_remeshing(G& g, const Remeshing_options& options = {}
     // the clean-up decide the quality (armadillo: 8 % fewer instructions,
     // valence 6 share up, docs/benchmarks.md session 5).
     const bool last = i + 1 == options.iterations;
-    r.tangential_relaxation_and_project(last ? options.smoothing_steps : (options.smoothing_steps + 1) / 2);
-    r.remove_bad_triangles();
+    r.tangential_relaxation_project_and_remove_bad_triangles(
+        last ? options.smoothing_steps : (options.smoothing_steps + 1) / 2, last ? &still_bad : nullptr);
     ++r.result().iterations;
     visitor.on_step("iteration", static_cast<std::size_t>(i + 1), static_cast<std::size_t>(options.iterations));
   }
-  if (options.iterations > 0) r.improve_min_angle();
+  if (options.iterations > 0) still_bad ? r.improve_min_angle(std::move(*still_bad)) : r.improve_min_angle();
   r.finish();
   visitor.on_finished(std::as_const(g));
   return r.result();

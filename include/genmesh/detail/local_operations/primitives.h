@@ -68,18 +68,27 @@ std::size_t vertex_degree(V<G> v, const G& g) {
   return n;
 }
 
+/// The cycle of halfedges around target(h) through h (the edges at target(h),
+/// when it is manifold) has fewer than k halfedges (stops counting at k).
+/// Unlike degree_below(target(h)), reads nothing of the vertex: from a face's
+/// halfedge into its corner, the first steps stay in that face's
+/// neighbourhood.
+template <class G>
+bool fan_below(H<G> h, std::size_t k, const G& g) {
+  std::size_t n = 0;
+  H<G> x = h;
+  do {
+    if (++n >= k) return false;
+    x = opposite(next(x, g), g);
+  } while (x != h);
+  return true;
+}
+
 /// v has fewer than k edges (stops counting at k).
 template <class G>
 bool degree_below(V<G> v, std::size_t k, const G& g) {
   const H<G> start = halfedge(v, g);
-  if (start == null_h<G>()) return k > 0;
-  std::size_t n = 0;
-  H<G> h = start;
-  do {
-    if (++n >= k) return false;
-    h = opposite(next(h, g), g);
-  } while (h != start);
-  return true;
+  return start == null_h<G>() ? k > 0 : fan_below(start, k, g);
 }
 
 /// The halfedge from u to v, or null.

@@ -4,11 +4,11 @@
 // once; with a face patch, over the patch's triangles only, so that a vertex
 // of the patch never lands on a face outside it.
 //
-// Queries are bounded: the caller passes a point known to lie on the
-// surface (the vertex's previous projection), so the search is pruned to the
-// ball through it, and the triangle it lies in, where the search starts
-// (Aabb_tree::closest_point_from: that triangle is tested first, and its
-// distance bounds the descent); the closest point is the global one either way.
+// Queries are bounded: the caller passes the triangle of the vertex's
+// previous projection, where the search starts (Aabb_tree::closest_point_from:
+// that triangle is tested first, and its distance bounds the descent), or,
+// when it has none, a point known to lie on the surface, so the search is
+// pruned to the ball through it; the closest point is the global one either way.
 // Deterministic: every backend numbers faces and vertices alike, so the tree
 // (built in face order, fans from the lowest-index corner) and its answers
 // are the same on every backend.
@@ -99,19 +99,21 @@ public:
     return out;
   }
 
-  /// The point of the surface nearest to q, given a point `on` of the
-  /// surface (it bounds the search: the nearest point is no farther) and
-  /// `triangle`, the (leaf-order) triangle of the previous answer or npos,
-  /// where the search starts: a vertex moved tangentially is usually still
-  /// nearest to the triangle it was on, or to one beside it. `triangle` is updated; with attached
-  /// values, `value` is set to theirs interpolated at the returned point.
+  /// The point of the surface nearest to q, given `triangle`, the
+  /// (leaf-order) triangle of the previous answer or npos, where the search
+  /// starts: a vertex moved tangentially is usually still nearest to the
+  /// triangle it was on, or to one beside it, whose distance then bounds the
+  /// rest of the search; and a point `on` of the surface, read only when
+  /// triangle is npos (it bounds the search: the nearest point is no
+  /// farther). `triangle` is updated; with attached values, `value` is set
+  /// to theirs interpolated at the returned point.
   Eigen::Vector3d project(const Eigen::Vector3d& q, const Eigen::Vector3d& on, std::size_t& triangle,
                           double* value = nullptr) const {
     if (tree_->empty() || !q.allFinite()) return q;
-    const double d2 = (q - on).squaredNorm();
+    const double d2 = triangle < triangle_count() ? 0 : (q - on).squaredNorm();
     if (std::isfinite(d2)) {
       // The previous triangle is tested first and bounds the rest.
-      const auto c = tree_->closest_point_from(q, squared_bound(d2), triangle);
+      const auto c = tree_->closest_point_from(q, bound(triangle, d2), triangle);
       // Nothing that near: face is null_face().
       if (c.face != boost::graph_traits<G>::null_face()) return answer(q, c, triangle, value);
     }
@@ -126,11 +128,11 @@ public:
     constexpr std::size_t width = 16;
     std::size_t index[width], m = 0;
     Eigen::Vector3d bq[width];
-    double bound[width];
+    double limit[width];
     std::size_t start[width];
     typename Aabb_tree<G>::Closest found[width];
     auto flush = [&] {
-      tree_->closest_points_from(std::span<const Eigen::Vector3d>(bq, m), std::span<const double>(bound, m),
+      tree_->closest_points_from(std::span<const Eigen::Vector3d>(bq, m), std::span<const double>(limit, m),
                                  std::span<const std::size_t>(start, m),
                                  std::span<typename Aabb_tree<G>::Closest>(found, m));
       for (std::size_t j = 0; j < m; ++j) {
@@ -143,12 +145,12 @@ public:
       m = 0;
     };
     for (std::size_t i = 0; i < q.size(); ++i) {
-      const double d2 = (q[i] - on[i]).squaredNorm();
+      const double d2 = triangle[i] < triangle_count() ? 0 : (q[i] - on[i]).squaredNorm();
       if (tree_->empty() || !q[i].allFinite() || !std::isfinite(d2)) {
         out[i] = project(q[i], on[i], triangle[i], value[i]);
         continue;
       }
-      index[m] = i, bq[m] = q[i], bound[m] = squared_bound(d2), start[m] = triangle[i];
+      index[m] = i, bq[m] = q[i], limit[m] = bound(triangle[i], d2), start[m] = triangle[i];
       if (++m == width) flush();
     }
     if (m != 0) flush();
@@ -165,10 +167,13 @@ public:
   std::size_t triangle_count() const { return tree_->triangle_count(); }
 
 private:
-  // The search bound through `on`, at squared distance d2 from the query,
-  // with a little slack: `on` is a computed point of a triangle, not exactly
-  // on it.
-  double squared_bound(double d2) const {
+  // The squared search bound: none from a start triangle (its distance
+  // bounds the search as soon as it is tested: the same answer as a bound
+  // through the previous point, which lies on it, without reading that
+  // point); else through `on`, at squared distance d2 from the query, with a
+  // little slack: `on` is a computed point of a triangle, not exactly on it.
+  double bound(std::size_t triangle, double d2) const {
+    if (triangle < triangle_count()) return std::numeric_limits<double>::infinity();
     const double r = std::sqrt(d2) * (1 + 1e-9) + slack_;
     return r * r;
   }

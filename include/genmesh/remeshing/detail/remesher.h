@@ -449,29 +449,74 @@ public:
   /// orientation (caps and slivers that the valence flips and smoothing left;
   /// pmp-library's remove_caps, widened). Two passes.
   std::size_t remove_bad_triangles() {
-    // 36°, the quality aimed at (issue 13): on armadillo after two Loop
-    // levels (832k faces) a threshold of 30° left 39 triangles below 36°,
-    // 36° leaves 20, at no measurable cost, valence 6 share unchanged
-    // (±0.1 %); which triangle is the worst stays chaotic
-    // (docs/benchmarks.md, session 4).
-    const double bad = std::cos(36.0 * std::numbers::pi / 180.0); // cos of the smallest angle we keep
     // The first pass looks only at the edges of triangles with an angle
     // below 36° (found without roots), the second at what the first changed.
-    const std::size_t n = flip_passes(
-        2,
+    return remove_bad_triangles([&](std::vector<int>& mark) {
+      for (auto f : faces(g_))
+        if (is_bad(f)) {
+          const H h0 = detail::geom::canonical_halfedge(f, g_);
+          for (const H x : {h0, next(h0, g_), prev(h0, g_)}) mark[eid(x)] = 0;
+        }
+    });
+  }
+
+  /// tangential_relaxation_and_project(steps), then remove_bad_triangles():
+  /// the same mesh. In the one-pass case the triangles below 36° are found
+  /// at the end of that pass, from its rings and its array of positions in
+  /// spatial order, instead of by a scan in face order that reads every
+  /// triangle's corners from scattered places (armadillo: that scan was 7 %
+  /// of remeshing's time; docs/benchmarks.md, session 11). Then, given
+  /// still_bad, it is set to the triangles still below 36°, by face index
+  /// (bad_faces(), for improve_min_angle): among those found and those the
+  /// flips changed; left empty in the other case.
+  std::size_t tangential_relaxation_project_and_remove_bad_triangles(int steps,
+                                                                    std::optional<std::vector<F>>* still_bad = nullptr) {
+    std::vector<H> bad; // a halfedge of each triangle below 36°
+    bool found = false;
+    if constexpr (std::is_same_v<Visitor, Mutation_visitor>) {
+      if (ref_ && o_.smoothing != Smoothing::none && steps > 0) {
+        tangential_relaxation(steps, true, &bad);
+        found = true;
+      }
+    }
+    if (!found) {
+      tangential_relaxation_and_project(steps);
+      return remove_bad_triangles();
+    }
+    std::vector<F> changed;
+    if (still_bad)
+      for (const H x : bad) changed.push_back(face(x, g_));
+    const std::size_t n = remove_bad_triangles(
         [&](std::vector<int>& mark) {
-          for (auto f : faces(g_)) {
-            // From the canonical corner: the test's rounding must not depend on the backend.
-            const H h0 = detail::geom::canonical_halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
-            if (has_angle_below(pt(target(h0, g_)), pt(target(h1, g_)), pt(target(h2, g_)), bad * bad))
-              for (const H x : {h0, h1, h2}) mark[eid(x)] = 0;
-          }
+          for (const H x : bad)
+            for (const H y : {x, next(x, g_), prev(x, g_)}) mark[eid(y)] = 0;
         },
         [&](H h) {
-          const auto [before, after] = flip_max_cos(h);
-          return before > bad && after < before - 1e-9;
-        },
-        [](H) {});
+          if (still_bad) changed.insert(changed.end(), {face(h, g_), face(opposite(h, g_), g_)});
+        });
+    if (still_bad) {
+      // Positions do not change here: a triangle below 36° now was one
+      // before, or a flip made it.
+      std::sort(changed.begin(), changed.end(), [&](F x, F y) { return get(fi_, x) < get(fi_, y); });
+      changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+      std::erase_if(changed, [&](F f) { return !is_bad(f); });
+      *still_bad = std::move(changed);
+    }
+    return n;
+  }
+
+  /// remove_bad_triangles() with its first pass's edges marked (0) by
+  /// first_marked(mark): those of the triangles below 36°.
+  /// after(h) follows each flip (h is then the new edge).
+  template <class FirstMarked, class After = void (*)(H)>
+  std::size_t remove_bad_triangles(FirstMarked&& first_marked, After&& after = [](H) {}) {
+    const double bad = bad_cos();
+    const std::size_t n = flip_passes(2, first_marked,
+                                      [&](H h) {
+                                        const auto [before, after] = flip_max_cos(h);
+                                        return before > bad && after < before - 1e-9;
+                                      },
+                                      after);
     result_.flips += n;
     return n;
   }
@@ -487,17 +532,20 @@ public:
   /// of the mesh never drops, constrained and fixed vertices stay, and every
   /// moved vertex ends on the input surface. At most 3 passes. Returns the
   /// vertices moved.
-  std::size_t improve_min_angle() {
-    const double bad = std::cos(36.0 * std::numbers::pi / 180.0);
-    grow();
-    auto is_bad = [&](F f) {
-      // From the canonical corner: the test's rounding must not depend on the backend.
-      const H h0 = detail::geom::canonical_halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
-      return has_angle_below(pt(target(h0, g_)), pt(target(h1, g_)), pt(target(h2, g_)), bad * bad);
-    };
-    std::vector<F> todo; // bad triangles, by face index
+  std::size_t improve_min_angle() { return improve_min_angle(bad_faces()); }
+
+  /// The faces with an angle below 36° (is_bad), by face index.
+  std::vector<F> bad_faces() const {
+    std::vector<F> out;
     for (auto f : faces(g_))
-      if (is_bad(f)) todo.push_back(f);
+      if (is_bad(f)) out.push_back(f);
+    return out;
+  }
+
+  /// improve_min_angle() given bad_faces() (todo).
+  std::size_t improve_min_angle(std::vector<F> todo) {
+    const double bad = bad_cos();
+    grow();
     std::vector<int> seen(index_bound(vertex_index, g_), 0);
     std::size_t moved = 0;
     for (int pass = 1; pass <= 3 && !todo.empty(); ++pass) {
@@ -607,6 +655,24 @@ public:
     if (!sizing_.empty()) sizing_[vid(v)] = best_value;
     vis_->on_vertex_moved(v, std::as_const(g_));
     return true;
+  }
+
+  /// The cosine of the smallest angle remove_bad_triangles and
+  /// improve_min_angle keep. 36°, the quality aimed at (issue 13): on
+  /// armadillo after two Loop levels (832k faces) a threshold of 30° left 39
+  /// triangles below 36°, 36° leaves 20, at no measurable cost, valence 6
+  /// share unchanged (±0.1 %); which triangle is the worst stays chaotic
+  /// (docs/benchmarks.md, session 4).
+  static double bad_cos() { return std::cos(36.0 * std::numbers::pi / 180.0); }
+
+  /// Whether triangle f has an angle below 36°, tested from its canonical
+  /// corner (the test's rounding must not depend on the backend):
+  /// has_angle_below(p0, p1, p2) with p0 at the corner of the lowest vertex
+  /// index and p1, p2 after it in f's order.
+  bool is_bad(F f) const {
+    const H h0 = detail::geom::canonical_halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
+    const double bad = bad_cos();
+    return has_angle_below(pt(target(h0, g_)), pt(target(h1, g_)), pt(target(h2, g_)), bad * bad);
   }
 
   /// Whether triangle (a, b, c) has an angle below the one whose squared
@@ -731,8 +797,9 @@ public:
 
   /// As tangential_relaxation(), with `steps` steps instead of
   /// options.smoothing_steps; with and_project (only without an observing
-  /// visitor), projects as well (tangential_relaxation_and_project).
-  std::size_t tangential_relaxation(int steps, bool and_project = false) {
+  /// visitor), projects as well (tangential_relaxation_and_project), and
+  /// then, given bad, appends to it a halfedge of each triangle below 36°.
+  std::size_t tangential_relaxation(int steps, bool and_project = false, std::vector<H>* bad = nullptr) {
     if (o_.smoothing == Smoothing::none || steps <= 0) return 0;
     grow();
     // The topology does not change while smoothing: read each free vertex's
@@ -776,13 +843,13 @@ public:
         if (moved[i].allFinite()) pos[free_id[i]] = moved[i];
     }
     if (and_project) {
-      // The queries' start triangles and states a few vertices ahead: they
-      // follow the tree's leaf order, the states are scattered by vertex
-      // index.
+      // The queries' start triangles a few vertices ahead: they follow the
+      // tree's leaf order.
       // Projected a batch at a time: the tree interleaves the batch's
       // searches (each independent of the others, so the same points).
       constexpr std::size_t ahead = 8, batch = 16;
       V bv[batch];
+      std::uint32_t bl[batch]; // their positions in order
       Eigen::Vector3d bq[batch], bon[batch], bout[batch];
       std::size_t btri[batch];
       double* bval[batch];
@@ -792,9 +859,9 @@ public:
                       std::span<std::size_t>(btri, m), std::span<double* const>(bval, m),
                       std::span<Eigen::Vector3d>(bout, m));
         for (std::size_t j = 0; j < m; ++j) {
-          on_[vid(bv[j])] = bout[j];
-          on_triangle_[vid(bv[j])] = btri[j];
+          on_triangle_[vid(bv[j])] = btri[j]; // known now: on_ is no longer read (Reference_surface::project)
           set_pt(bv[j], bout[j]);
+          pos[bl[j]] = pt(bv[j]);
         }
         m = 0;
       };
@@ -802,16 +869,14 @@ public:
         if (i + ahead < order.size()) {
           const std::uint32_t w = vid(order[i + ahead]);
           ref_->prefetch(on_triangle_[w]);
-#if defined(__GNUC__)
-          __builtin_prefetch(&on_[w]);
-#endif
         }
         const V v = order[i];
         if (vflag_at(v) & v_fixed) continue;
         bv[m] = v;
+        bl[m] = static_cast<std::uint32_t>(i);
         bq[m] = to_eigen(from_eigen<point_t<G>>(pos[i])); // as the mesh stores it
-        bon[m] = on_[vid(v)];
         btri[m] = on_triangle_[vid(v)];
+        bon[m] = btri[m] < ref_->triangle_count() ? bq[m] : on_[vid(v)]; // read only for an unknown triangle
         bval[m] = sizing_.empty() ? nullptr : &sizing_[vid(v)];
         if (++m == batch) flush();
       }
@@ -819,6 +884,7 @@ public:
       // Vertices without edges are not smoothed, but project() moves them.
       for (auto v : vertices(g_))
         if (halfedge(v, g_) == null_h() && !(vflag_at(v) & v_fixed)) project_vertex(v);
+      if (bad) append_bad_triangles(order, pos, free_id, offset, ring, *bad);
       return free_id.size();
     }
     for (const std::uint32_t i : free_id) {
@@ -826,6 +892,45 @@ public:
       vis_->on_vertex_moved(order[i], std::as_const(g_));
     }
     return free_id.size();
+  }
+
+  /// A halfedge of each triangle below 36° (is_bad) onto out, each triangle
+  /// tested once, at the corner of its lowest vertex index, with the same
+  /// arguments is_bad gives has_angle_below: for a free vertex from its ring
+  /// and the positions of tangential_relaxation (order, pos: every vertex
+  /// with edges in spatial order and its position as the mesh stores it;
+  /// free_id, offset, ring: the free vertices' closed rings, face j being
+  /// (ring[j], v, ring[j + 1])); for the others from the mesh. The halfedge
+  /// of a bad triangle is looked up in the mesh (few are bad).
+  void append_bad_triangles(const std::vector<V>& order, const std::vector<Eigen::Vector3d>& pos,
+                            const std::vector<std::uint32_t>& free_id, const std::vector<std::uint32_t>& offset,
+                            const std::vector<std::uint32_t>& ring, std::vector<H>& out) const {
+    const double bad = bad_cos(), bad2 = bad * bad;
+    auto add = [&](H x) { out.push_back(x); };
+    std::size_t f = 0; // free_id[f]: the next free vertex in order
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const V v = order[i];
+      const std::uint32_t vi = vid(v);
+      if (f < free_id.size() && free_id[f] == i) {
+        const std::uint32_t* r = ring.data() + offset[f];
+        const std::uint32_t k = offset[f + 1] - offset[f];
+        ++f;
+        for (std::uint32_t j = 0; j < k; ++j) {
+          const std::uint32_t a = r[j], c = r[j + 1 == k ? 0 : j + 1];
+          if (vid(order[a]) < vi || vid(order[c]) < vi || !has_angle_below(pos[i], pos[c], pos[a], bad2)) continue;
+          for_each_in_any_order(v, [&](H x) {
+            if (source(x, g_) == order[a]) add(x);
+          });
+        }
+        continue;
+      }
+      for_each_in_any_order(v, [&](H x) {
+        if (is_border(x)) return;
+        const V a = source(x, g_), c = target(next(x, g_), g_);
+        if (vid(a) < vi || vid(c) < vi || !has_angle_below(pt(v), pt(c), pt(a), bad2)) return;
+        add(x);
+      });
+    }
   }
 
   /// The tangential move of a free (inner) vertex at p whose ring
@@ -1039,6 +1144,22 @@ private:
     } while (x != start);
   }
 
+  /// Whether pred(x) holds for every halfedge x into v, from halfedge(v);
+  /// stops at the first that fails (the rest of the walk is a chain of
+  /// loads that decides nothing: collapse attempts, most of which fail on
+  /// their first lengths, spent a third of their time there).
+  template <class Pred>
+  bool all_in_any_order(V v, Pred&& pred) const {
+    const H start = halfedge(v, g_);
+    if (start == null_h()) return true;
+    H x = start;
+    do {
+      if (!pred(x)) return false;
+      x = opposite(next(x, g_), g_);
+    } while (x != start);
+    return true;
+  }
+
   /// Calls f(x) for every halfedge x into v, from the canonical start: v's
   /// border halfedge if it has one, else the one of its lowest-numbered edge.
   template <class Fn>
@@ -1187,29 +1308,23 @@ private:
   bool collapse_geometry_ok(H h) const {
     const V x = source(h, g_), y = target(h, g_);
     const Eigen::Vector3d px = pt(x), py = pt(y);
-    bool ok = true;
     // The lengths first, around the whole ring: most attempts that fail,
     // fail here, before any of the normals below is computed.
-    for_each_in_any_order(x, [&](H in) {
-      if (!ok) return;
+    if (!all_in_any_order(x, [&](H in) {
+          const V a = source(in, g_);
+          return a == y || !((pt(a) - py).squaredNorm() > hi2(a, y));
+        }))
+      return false;
+    return all_in_any_order(x, [&](H in) {
       const V a = source(in, g_);
-      if (a != y && (pt(a) - py).squaredNorm() > hi2(a, y)) ok = false;
-    });
-    if (!ok) return false;
-    for_each_in_any_order(x, [&](H in) {
-      if (!ok) return;
-      const V a = source(in, g_);
-      if (a == y) return;
-      const Eigen::Vector3d pa = pt(a);
-      if (is_border(in)) return;
+      if (a == y || is_border(in)) return true;
       const V b = target(next(in, g_), g_);
-      if (b == y) return;
+      if (b == y) return true;
       // face(in) = (a, x, b) becomes (a, y, b).
-      const Eigen::Vector3d pb = pt(b);
+      const Eigen::Vector3d pa = pt(a), pb = pt(b);
       const Eigen::Vector3d before = triangle_normal(pa, px, pb), after = triangle_normal(pa, py, pb);
-      if (!(before.dot(after) > 0)) ok = false;
+      return before.dot(after) > 0;
     });
-    return ok;
   }
 
   int valence(V v) const {
@@ -1241,18 +1356,22 @@ private:
       c = oh;
     }
     if (c == null_h()) return std::nullopt;
-    // The link condition (symmetric), after the cheaper geometric test passed.
-    if (!genmesh::can_collapse_edge(edge(h, g_), std::as_const(g_))) return std::nullopt;
     // collapse_edge removes x = source(c), c's edge, x–t on top and y–b at
     // the bottom (x–b survives as y–b): y–b's flags move to x–b's index.
     const H oc = opposite(c, g_);
     const bool bottom = !is_border(oc);
     const std::uint32_t kept = bottom ? eid(next(oc, g_)) : 0;
     const std::uint8_t kept_flag = bottom ? eflag(prev(oc, g_)) : 0;
-    for_each_in_any_order(source(c, g_), [&](H in) { ++stamp[eid(in)]; });
-    for_each_in_any_order(target(c, g_), [&](H in) { ++stamp[eid(in)]; });
+    // The edges at both ends change (their stamps are bumped once the
+    // collapse is done). collapse_edge tests the link condition (symmetric)
+    // and refuses without a change; testing it here first as well was a
+    // second walk of the rings and their neighbours per collapse.
+    boost::container::small_vector<std::uint32_t, 32> changed;
+    for_each_in_any_order(source(c, g_), [&](H in) { changed.push_back(eid(in)); });
+    for_each_in_any_order(target(c, g_), [&](H in) { changed.push_back(eid(in)); });
     const auto q = genmesh::collapse_edge(edge(c, g_), g_, *vis_);
     if (!q) return std::nullopt;
+    for (const std::uint32_t i : changed) ++stamp[i];
     if (bottom) eflag_[kept] = kept_flag;
     return *q;
   }
@@ -1455,7 +1574,7 @@ private:
   decltype(get(face_index, std::declval<const G&>())) fi_;
   double L_ = 0, hi2_ = 0, lo2_ = 0;
   std::vector<std::uint8_t> vflag_, eflag_;
-  std::vector<Eigen::Vector3d> on_; // each vertex's last point on the reference surface
+  std::vector<Eigen::Vector3d> on_; // a vertex's last point on the reference surface (read while on_triangle_ is npos)
   std::vector<std::size_t> on_triangle_; // and the reference triangle it lies in (npos: unknown)
   std::vector<double> sizing_;
   std::unique_ptr<Reference_surface<G>> ref_;

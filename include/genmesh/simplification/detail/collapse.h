@@ -164,6 +164,7 @@ class Collapser {
       // The queue holds costs as floats (monotone: the order only gains
       // ties); the bound is checked on the exact cost, in collapse().
       const std::size_t ei = queue_.pop();
+      if (!queue_.empty()) ahead_begin(queue_.top());
       if (collapse(ei)) {
         ++r.collapses;
         r.max_error = std::max(r.max_error, std::sqrt(last_cost_));
@@ -297,7 +298,11 @@ class Collapser {
   void initialize() {
     const std::size_t vb = pos_.size(), eb = index_bound(edge_index, g_);
     data_.assign(vb, Stored{});
-    locked_.assign(vb, 0);
+    // Lock bytes only where something can be locked: without them where()
+    // reads no per-vertex byte (a cache miss a requeued edge at 832k faces).
+    locks_ = static_cast<bool>(o_.is_locked) || o_.border == Border_mode::lock || o_.feature_angle.has_value() ||
+             static_cast<bool>(o_.edge_is_constrained);
+    if (locks_) locked_.assign(vb, 0);
     hint_ = Bits(vb);
     refused_ = Bits(eb);
     if constexpr (!native_edges) edesc_.assign(eb, E{});
@@ -604,6 +609,7 @@ class Collapser {
   // a collapse across, staying put; a collapse along its line keeps the new
   // point on the old segment); two pinned ends across a line: refused.
   Where where(std::size_t k, std::size_t a, std::size_t b) const {
+    if (!locks_) return Where::anywhere;
     if (locked_[a] && locked_[b]) return Where::nowhere;
     if (!features_) return locked_[a] ? Where::at_a : locked_[b] ? Where::at_b : Where::anywhere;
     if (feature_[k]) return locked_[a] ? Where::at_a : locked_[b] ? Where::at_b : Where::on_segment;
@@ -693,11 +699,60 @@ class Collapser {
     return {pos_[a], pos_[b], tris_, borders_, link_};
   }
 
+  // ---- looking ahead ---------------------------------------------------------
+  // The queue's top after a pop is nearly always the next edge popped (all
+  // but 361 of 375k pops on the 832k armadillo → 10 %), and its collapse
+  // starts by walking both fans of the edge, scattered in memory: those
+  // misses were a quarter of the unguarded run (in fan_keeps_normals). So
+  // ahead_begin names the top right after the pop (and asks for its links),
+  // and once collapse_edge has left the mesh valid again, each requeue walks
+  // both of its fans one halfedge further (ahead_step): it reads what the
+  // last step asked for and asks for the next halfedge's links (where the
+  // mesh can: HasNativePrefetch) and the neighbour's point and data,
+  // overlapping those misses with the requeues' own. Hints and reads
+  // only, of a valid mesh (the edge is still queued, so it lives): no effect
+  // on the result. Every backend gains, the reads alone acting as prefetches
+  // (832k armadillo → 10 %, unguarded: Halfedge_mesh 2.2 → 1.5 s,
+  // Surface_mesh 2.3 → 1.7 s, Incidence_mesh 6.6 → 5.5 s).
+  struct Ahead {
+    std::size_t edge = 0;
+    H start[2]{};         // halfedge(edge) and its opposite: where the walks end
+    H x[2]{};             // side 0: the halfedges into target(start[0]), side 1: into its source
+    int left[2] = {0, 0}; // steps allowed (0: stopped)
+  };
+  void ahead_begin(std::size_t k) {
+    ahead_.edge = k;
+    ahead_.left[0] = ahead_.left[1] = 0;
+    genmesh::detail::prefetch_links(halfedge(edge_of(k), g_), std::as_const(g_));
+  }
+  // After collapse_edge: the walks from the start, if the edge lives.
+  void ahead_resume() {
+    if (!queue_.contains(ahead_.edge)) return;
+    const H h = halfedge(edge_of(ahead_.edge), g_);
+    ahead_.start[0] = ahead_.x[0] = h;
+    ahead_.start[1] = ahead_.x[1] = opposite(h, g_);
+    ahead_.left[0] = ahead_.left[1] = 32; // a bound for the odd vertex of high degree
+  }
+  void ahead_step() {
+    for (int s = 0; s < 2; ++s) {
+      if (ahead_.left[s] == 0) continue;
+      --ahead_.left[s];
+      const H x = ahead_.x[s];
+      const std::size_t u = vi(source(x, g_));
+      prefetch(pos_.address(u));
+      if constexpr (!memoryless) prefetch(&data_[u]);
+      const H nx = opposite(next(x, g_), g_);
+      genmesh::detail::prefetch_links(nx, std::as_const(g_));
+      ahead_.x[s] = nx;
+      if (nx == ahead_.start[s]) ahead_.left[s] = 0;
+    }
+  }
+
   // The vertex that survives the collapse of h's edge to x: a locked end,
   // else the end nearer to x, else the lower index.
   bool target_survives(H h, const Eigen::Vector3d& x) const {
     const std::size_t p = vi(source(h, g_)), q = vi(target(h, g_));
-    if (locked_[p] != locked_[q]) return locked_[q] != 0;
+    if (locks_ && locked_[p] != locked_[q]) return locked_[q] != 0;
     if (features_ && on_line_[p] != on_line_[q]) return on_line_[q] != 0;
     const double dp = (pos_[p] - x).squaredNorm(), dq = (pos_[q] - x).squaredNorm();
     if (dp != dq) return dq < dp;
@@ -1190,11 +1245,7 @@ class Collapser {
     return std::uint64_t{1} << ((f * 0x9E3779B1u) >> 26);
   }
 
-  static void prefetch([[maybe_unused]] const void* p) {
-#if defined(__GNUC__) || defined(__clang__)
-    __builtin_prefetch(p);
-#endif
-  }
+  static void prefetch(const void* p) { genmesh::detail::prefetch(p); }
 
   // Lists the live face with corners v (not around p or q) with the new faces whose boxes
   // its box meets (bit i: new face i; new faces from the 64th on are always
@@ -1373,6 +1424,7 @@ class Collapser {
   // Requeues the edge of h (any of its two halfedges) with a fresh cost.
   void requeue(E e) {
     if (passes_) return; // the next pass computes every cost again
+    ahead_step();
     const std::size_t k = ei(e);
     if constexpr (memoryless) {
       if (stamp_[k] == epoch_) return; // already requeued after this collapse
@@ -1401,10 +1453,7 @@ class Collapser {
     const E e = edge(h, g_);
     const H oh = opposite(h, g_);
     const V p = source(h, g_), q = target(h, g_);
-    if (!fan_keeps_normals(p, q, pl.position) || !fan_keeps_normals(q, p, pl.position) ||
-        (o_.max_valence > 0 && valence_after(h) > o_.max_valence) ||
-        !genmesh::can_collapse_edge(e, std::as_const(g_)) ||
-        (o_.prevent_self_intersections && !stays_embedded(h, pl.position))) {
+    if (!allowed(h, pl.position)) {
       refused_[k] = 1;
       hint_[vi(p)] = hint_[vi(q)] = 1;
       return false;
@@ -1468,6 +1517,7 @@ class Collapser {
     vis_.on_collapse_placement(h, std::as_const(pl.position), pl.cost, std::as_const(g_));
     Point_writer writer{{}, this, pl.position};
     if (!genmesh::collapse_edge(e, g_, writer)) return false; // can_collapse_edge said yes: never happens
+    if (!passes_) ahead_resume();
     pos_.set(iq, pl.position); // the mesh has it (Point_writer); a private copy follows
     if constexpr (!memoryless) {
       set_data(iq, merged_data); // relative to the new point
@@ -1553,6 +1603,19 @@ class Collapser {
     }
   }
 
+  // The constraints' tests of collapsing edge(h) into target(h) at x, the
+  // cheapest first: no face turns too far (fold-over, .min_angle,
+  // .max_aspect_ratio), .max_valence, the link condition, the
+  // self-intersection guard.
+  bool allowed(H h, const Eigen::Vector3d& x) {
+    const V p = source(h, g_), q = target(h, g_);
+    if (!fan_keeps_normals(p, q, x)) return false;
+    if (!fan_keeps_normals(q, p, x)) return false;
+    if (o_.max_valence > 0 && valence_after(h) > o_.max_valence) return false;
+    if (!genmesh::can_collapse_edge(edge(h, g_), std::as_const(g_))) return false;
+    return !o_.prevent_self_intersections || stays_embedded(h, x);
+  }
+
   // Forwards collapse_edge's hooks to the user's visitor, writing the
   // survivor's new point first (so that the mesh's points are current in
   // every hook: before_collapse sees the old ones, on_collapse the new).
@@ -1608,6 +1671,9 @@ class Collapser {
   double max_error_ = std::numeric_limits<double>::infinity();
   bool over_error_ = false;
   V last_survivor_{};    // its survivor, once it collapsed
+  // Per vertex: never moves nor disappears (empty unless locks_: .is_locked,
+  // Border_mode::lock or feature lines).
+  bool locks_ = false;
   std::vector<std::uint8_t> locked_;
   // Per vertex, "has a refused edge"; per edge, "refused". Bits (Boost's
   // dynamic_bitset): 1.4 MB less than bytes at 832k faces.
@@ -1637,6 +1703,7 @@ class Collapser {
   std::vector<std::uint8_t> vflags_;
   std::vector<std::uint64_t> ring_edges_; // ∂U (see ring_projects_one_to_one), from << 32 | to
   std::vector<H> around_;           // the survivor's incoming halfedges
+  Ahead ahead_;                     // the next edge's fans, walked ahead (see ahead_begin)
   std::vector<Box> fresh_box_;
   std::vector<std::uint32_t> near_; // faces a grid query found
   std::vector<H> near_h_;           // a halfedge of each
