@@ -1212,8 +1212,8 @@ class Collapser {
               exact_test(fresh_[i], fresh_[j]))
             return false;
     }
-    // The faces left (not around p or q), their points asked for; then
-    // their boxes pick the candidates.
+    // The faces left (not around p or q; their points were asked for
+    // above): their boxes pick the candidates.
     candidates_.clear();
     for (const auto& v : near_corners_) pick_candidate(v, all);
     const std::size_t nf = fresh_.size();
