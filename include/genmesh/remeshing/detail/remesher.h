@@ -1213,6 +1213,12 @@ private:
 
   /// The canonical start (see for_each_in) among the halfedges of a ring in
   /// walk order: its first border halfedge, else the one of its lowest edge.
+  std::size_t canonical_first(const Ring& r) const {
+    for (std::size_t i = 0; i < r.size(); ++i)
+      if (is_border(r[i])) return i;
+    return lowest_edge_first(r);
+  }
+
   /// canonical_first(r) of a ring without a border halfedge: the one of its
   /// lowest edge.
   std::size_t lowest_edge_first(const Ring& r) const {
@@ -1220,16 +1226,6 @@ private:
     std::uint32_t lowest = k_none;
     for (std::size_t i = 0; i < r.size(); ++i)
       if (const std::uint32_t e = eid(r[i]); e < lowest) lowest = e, first = i;
-    return first;
-  }
-
-  std::size_t canonical_first(const Ring& r) const {
-    std::size_t first = 0;
-    std::uint32_t lowest = k_none;
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      if (is_border(r[i])) return i;
-      if (const std::uint32_t e = eid(r[i]); e < lowest) lowest = e, first = i;
-    }
     return first;
   }
 
