@@ -825,7 +825,7 @@ public:
       V batch[ring_batch];
       for (std::size_t b = 0; b < n; ++b) batch[b] = order[free_id[i + b]];
       const std::size_t first = ring.size();
-      append_rings(std::span<const V>(batch, n), ring, offset);
+      append_rings(std::span<const V>(batch, n), ring, offset, true);
       for (std::size_t j = first; j < ring.size(); ++j) ring[j] = local[ring[j]];
     }
     std::vector<Eigen::Vector3d> moved(free_id.size());
@@ -1181,8 +1181,10 @@ private:
   /// halfedge indices are scattered, and the chains of different vertices
   /// overlap (one ring at a time, this was ~5 % of remeshing's time on
   /// armadillo; docs/benchmarks.md, session 9).
-  void append_rings(std::span<const V> vs, std::vector<std::uint32_t>& out,
-                    std::vector<std::uint32_t>& offsets) const {
+  /// With closed (every v of vs is free: no border halfedge comes into it),
+  /// the canonical start is looked for without reading faces.
+  void append_rings(std::span<const V> vs, std::vector<std::uint32_t>& out, std::vector<std::uint32_t>& offsets,
+                    bool closed = false) const {
     Ring rings[ring_batch];
     H start[ring_batch], at[ring_batch];
     std::size_t live = 0;
@@ -1200,7 +1202,7 @@ private:
     }
     for (std::size_t b = 0; b < vs.size(); ++b) {
       const Ring& r = rings[b];
-      const std::size_t first = canonical_first(r), k = r.size(), base = out.size();
+      const std::size_t first = closed ? lowest_edge_first(r) : canonical_first(r), k = r.size(), base = out.size();
       // One resize per ring (a push_back per neighbour was 2 % of
       // remeshing's instructions, not inlined).
       out.resize(base + k);
@@ -1212,12 +1214,18 @@ private:
   /// The canonical start (see for_each_in) among the halfedges of a ring in
   /// walk order: its first border halfedge, else the one of its lowest edge.
   std::size_t canonical_first(const Ring& r) const {
+    for (std::size_t i = 0; i < r.size(); ++i)
+      if (is_border(r[i])) return i;
+    return lowest_edge_first(r);
+  }
+
+  /// canonical_first(r) of a ring without a border halfedge: the one of its
+  /// lowest edge.
+  std::size_t lowest_edge_first(const Ring& r) const {
     std::size_t first = 0;
     std::uint32_t lowest = k_none;
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      if (is_border(r[i])) return i;
+    for (std::size_t i = 0; i < r.size(); ++i)
       if (const std::uint32_t e = eid(r[i]); e < lowest) lowest = e, first = i;
-    }
     return first;
   }
 
