@@ -719,8 +719,8 @@ class Collapser {
   // Surface_mesh, whose links cannot be hinted, from 2.07 to 1.88 s more).
   struct Ahead {
     std::size_t edge = 0;
-    H start[2]{};         // halfedge(edge) and its opposite: where the walks end
-    H x[2]{};             // side 0: the halfedges into target(start[0]), side 1: into its source
+    H start[2] = {H(), H()}; // halfedge(edge) and its opposite: where the walks end
+    H x[2] = {H(), H()};     // side 0: the halfedges into target(start[0]), side 1: into its source
     int left[2] = {0, 0}; // steps allowed (0: stopped)
   };
   void ahead_begin(std::size_t k) {
