@@ -193,13 +193,7 @@ public:
   /// their cache lines) will be read soon: a cache prefetch, nothing else.
   void prefetch(Halfedge_index h) const { hlinks_.prefetch(h.idx()); }
   /// Hints that halfedge(v) will be read soon.
-  void prefetch(Vertex_index v) const {
-#if defined(__GNUC__) || defined(__clang__)
-    __builtin_prefetch(vhalfedge_.data() + v.idx());
-#else
-    (void)v;
-#endif
-  }
+  void prefetch(Vertex_index v) const { detail::prefetch(vhalfedge_.data() + v.idx()); }
 
   /// opposite(next(h)): the next halfedge clockwise around target(h).
   [[nodiscard]] Halfedge_index next_around_target(Halfedge_index h) const { return opposite(next(h)); }

@@ -31,6 +31,8 @@
 // command in docs/benchmarks.md, "Mutable priority queue").
 #pragma once
 
+#include <genmesh/detail/prefetch.h>
+
 #include <algorithm>
 #include <cassert>
 #include <concepts>
@@ -50,8 +52,11 @@ namespace genmesh {
 /// whose ties go by something derived from the key, which then need not be
 /// stored in the priority). Keys and heap positions are stored as Index
 /// (std::uint32_t halves the key → position array and may shrink the heap
-/// entries; then keys and sizes must stay below its maximum).
-template <class Priority, class Compare = std::less<Priority>, std::unsigned_integral Index = std::size_t>
+/// entries; then keys and sizes must stay below its maximum). Arity: the
+/// heap's (4 by default; a larger one makes a big heap shallower, fewer
+/// cache misses per sift, at more comparisons per level).
+template <class Priority, class Compare = std::less<Priority>, std::unsigned_integral Index = std::size_t,
+          std::size_t Arity = 4>
 class Mutable_priority_queue {
  public:
   using priority_type = Priority;
@@ -138,14 +143,10 @@ class Mutable_priority_queue {
   /// position is in cache), lets a caller about to update many scattered
   /// keys overlap their cache misses.
   void prefetch(std::size_t key) const {
-#if defined(__GNUC__) || defined(__clang__)
-    if (key < position_.size()) __builtin_prefetch(&position_[key]);
-#endif
+    if (key < position_.size()) detail::prefetch(&position_[key]);
   }
   void prefetch_entry(std::size_t key) const {
-#if defined(__GNUC__) || defined(__clang__)
-    if (contains(key)) __builtin_prefetch(&heap_[position_[key]]);
-#endif
+    if (contains(key)) detail::prefetch(&heap_[position_[key]]);
   }
 
   /// Empties the queue, keeping the key bound and the storage.
@@ -155,7 +156,8 @@ class Mutable_priority_queue {
   }
 
  private:
-  static constexpr std::size_t arity = 4;
+  static constexpr std::size_t arity = Arity;
+  static_assert(Arity >= 2);
   static constexpr Index absent = std::numeric_limits<Index>::max();
 
   struct Entry {

@@ -21,6 +21,7 @@
 // numbers only new items, see <genmesh/adaptors/cgal.h>.)
 #pragma once
 
+#include <genmesh/detail/prefetch.h>
 #include <genmesh/point_traits.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -129,13 +130,6 @@ concept HasNativePrefetch = requires(const G& g, typename boost::graph_traits<G>
 };
 
 namespace detail {
-
-/// A hint that the memory at p will be read soon (a cache prefetch).
-inline void prefetch([[maybe_unused]] const void* p) {
-#if defined(__GNUC__) || defined(__clang__)
-  __builtin_prefetch(p);
-#endif
-}
 
 /// Hints x's links into the cache (a halfedge's, or a vertex's halfedge)
 /// where g can (HasNativePrefetch); nothing otherwise.

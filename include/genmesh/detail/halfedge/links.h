@@ -2,6 +2,7 @@
 // (used through <genmesh/halfedge_mesh.h>).
 #pragma once
 
+#include <genmesh/detail/prefetch.h>
 #include <genmesh/elements.h>
 
 #include <algorithm>
@@ -58,13 +59,9 @@ public:
   /// Hints that halfedge i's links will be read soon (a cache prefetch of
   /// its next, target and record; its opposite's share the cache lines).
   void prefetch(std::size_t i) const {
-#if defined(__GNUC__) || defined(__clang__)
-    __builtin_prefetch(next_ + i);
-    __builtin_prefetch(target_ + i);
-    __builtin_prefetch(rec_ + i);
-#else
-    (void)i;
-#endif
+    detail::prefetch(next_ + i);
+    detail::prefetch(target_ + i);
+    detail::prefetch(rec_ + i);
   }
 
   /// Appends two halfedges with null links; returns the index of the first.
