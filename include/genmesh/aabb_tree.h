@@ -48,6 +48,7 @@
 #include <genmesh/geometry.h>
 #include <genmesh/property_maps.h>
 #include <genmesh/detail/memory/large_allocator.h>
+#include <genmesh/detail/prefetch.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -347,15 +348,7 @@ public:
   /// index, as closest_point_from's start): loads its corners into the
   /// cache ahead of time. t out of range: nothing.
   void prefetch_triangle(std::size_t t) const {
-#if defined(__GNUC__)
-    if (t < tris_.size()) {
-      const char* p = reinterpret_cast<const char*>(&tris_[t]);
-      __builtin_prefetch(p);
-      __builtin_prefetch(p + sizeof(Tri) - 1);
-    }
-#else
-    (void)t;
-#endif
+    if (t < tris_.size()) prefetch_tri(t);
   }
   const std::array<Eigen::Vector3d, 3>& triangle_points(std::size_t i) const { return tris_[i].p; }
   Face triangle_face(std::size_t i) const { return info_[i].face; }
@@ -655,11 +648,7 @@ private:
 
   // A triangle within reach of the node just opened, tested at the next step.
   void keep(Walk& w, std::uint32_t t, float d) const {
-#if defined(__GNUC__)
-    const char* p = reinterpret_cast<const char*>(&tris_[t]);
-    __builtin_prefetch(p);
-    __builtin_prefetch(p + sizeof(Tri) - 1);
-#endif
+    prefetch_tri(t);
     w.pending[w.np] = t;
     w.pending_d[w.np++] = d;
   }
@@ -677,15 +666,19 @@ private:
     return false;
   }
 
+  // Triangle t's record (it may straddle two cache lines) into the cache.
+  void prefetch_tri(std::size_t t) const {
+    const char* p = reinterpret_cast<const char*>(&tris_[t]);
+    detail::prefetch(p);
+    detail::prefetch(p + sizeof(Tri) - 1);
+  }
+
+  // Node n's record (it spans up to three cache lines) into the cache.
   void prefetch_node(std::uint32_t n) const {
-#if defined(__GNUC__)
     const char* p = reinterpret_cast<const char*>(&nodes_[n]);
-    __builtin_prefetch(p);
-    __builtin_prefetch(p + 64);
-    __builtin_prefetch(p + sizeof(Node) - 1);
-#else
-    (void)n;
-#endif
+    detail::prefetch(p);
+    detail::prefetch(p + 64);
+    detail::prefetch(p + sizeof(Node) - 1);
   }
 
   // A query point beyond float range: test every triangle.
