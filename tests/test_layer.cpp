@@ -731,22 +731,17 @@ void check_descriptor_of_index(G g) {
   // Three edges and two faces gone (their indices stay holes): the others
   // keep theirs.
   ASSERT_TRUE(genmesh::collapse_edge(*std::next(edges(g).begin(), 7), g));
-  if constexpr (HasNativeDescriptorOfIndex<G, edge_index_t>) {
-    const auto eidx = get(genmesh::edge_index, std::as_const(g));
-    for (auto e : edges(g)) {
-      const auto made = genmesh_native_descriptor(genmesh::edge_index, std::as_const(g),
-                                                  static_cast<std::size_t>(get(eidx, e)));
-      EXPECT_EQ(made, e);
-      EXPECT_EQ(halfedge(made, g), halfedge(e, g));
+  // Every element's descriptor made from its index is the one the range yields.
+  auto check = [&](auto tag, const auto& range) {
+    const auto index = get(tag, std::as_const(g));
+    for (auto x : range) {
+      const auto made = genmesh_native_descriptor(tag, std::as_const(g), static_cast<std::size_t>(get(index, x)));
+      EXPECT_EQ(made, x);
+      EXPECT_EQ(halfedge(made, g), halfedge(x, g));
     }
-  }
-  const auto fidx = get(genmesh::face_index, std::as_const(g));
-  for (auto f : faces(g)) {
-    const auto made = genmesh_native_descriptor(genmesh::face_index, std::as_const(g),
-                                                static_cast<std::size_t>(get(fidx, f)));
-    EXPECT_EQ(made, f);
-    EXPECT_EQ(halfedge(made, g), halfedge(f, g));
-  }
+  };
+  if constexpr (HasNativeDescriptorOfIndex<G, edge_index_t>) check(genmesh::edge_index, edges(g));
+  check(genmesh::face_index, faces(g));
 }
 
 TEST(DescriptorOfIndex, IsTheDescriptorEdgesAndFacesYield) {

@@ -204,11 +204,7 @@ public:
   /// closest_point(q, bound); among equally near triangles, which one is
   /// returned depends on start. start out of range: closest_point(q, bound).
   Closest closest_point_from(const Eigen::Vector3d& q, double max_squared_distance, std::size_t start) const {
-    if (start >= tris_.size()) return closest_point(q, max_squared_distance);
-    Search s{max_squared_distance};
-    test_triangle(q, static_cast<std::uint32_t>(start), s);
-    // The descent does not test it again (the same distance: no change).
-    s.tested = static_cast<std::uint32_t>(start);
+    Search s = search_from(q, max_squared_distance, start);
     search(q, s);
     return answer(s);
   }
@@ -230,11 +226,7 @@ public:
       bool live[width];
       std::size_t active = 0;
       for (std::size_t i = 0; i < m; ++i) {
-        s[i] = Search{max_squared_distance[base + i]};
-        if (const std::size_t t = start[base + i]; t < tris_.size()) {
-          test_triangle(q[base + i], static_cast<std::uint32_t>(t), s[i]);
-          s[i].tested = static_cast<std::uint32_t>(t);
-        }
+        s[i] = search_from(q[base + i], max_squared_distance[base + i], start[base + i]);
         live[i] = walk_start(w[i], q[base + i], s[i]);
         active += live[i];
       }
@@ -545,6 +537,18 @@ private:
     if (!walk_start(w, q, s)) return;
     while (walk_step(w)) {
     }
+  }
+
+  // A search bounded by max_squared_distance with triangle start (a
+  // leaf-order index; none when out of range) tested first: its distance
+  // bounds the descent, which does not test it again.
+  Search search_from(const Eigen::Vector3d& q, double max_squared_distance, std::size_t start) const {
+    Search s{max_squared_distance};
+    if (start < tris_.size()) {
+      test_triangle(q, static_cast<std::uint32_t>(start), s);
+      s.tested = static_cast<std::uint32_t>(start);
+    }
+    return s;
   }
 
   // A descent's state between two nodes: search() runs one to its end,

@@ -1135,13 +1135,10 @@ private:
   /// what does not depend on the order (counts, flags, yes/no checks).
   template <class Fn>
   void for_each_in_any_order(V v, Fn&& f) const {
-    const H start = halfedge(v, g_);
-    if (start == null_h()) return;
-    H x = start;
-    do {
+    all_in_any_order(v, [&](H x) {
       f(x);
-      x = opposite(next(x, g_), g_);
-    } while (x != start);
+      return true;
+    });
   }
 
   /// Whether pred(x) holds for every halfedge x into v, from halfedge(v);

@@ -1253,8 +1253,6 @@ class Collapser {
     return std::uint64_t{1} << ((f * 0x9E3779B1u) >> 26);
   }
 
-  static void prefetch(const void* p) { genmesh::detail::prefetch(p); }
-
   // Lists the live face with corners v (not around p or q) with the new faces whose boxes
   // its box meets (bit i: new face i; new faces from the 64th on are always
   // tested), unless it meets none.
