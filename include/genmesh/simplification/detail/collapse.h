@@ -79,9 +79,10 @@ concept Simplifiable =
       { genmesh::can_collapse_edge(e, cg) } -> std::convertible_to<bool>;
     };
 
-// The policy's merge and fixed placement, or the quadric defaults.
+// The policy's merge and fixed placement, or the quadric defaults (merge
+// always inlined, as Quadric's sum: see quadric.h).
 template <class Policy, class Data>
-Data merge(const Policy& p, const Data& x, const Data& y) {
+[[gnu::always_inline]] inline Data merge(const Policy& p, const Data& x, const Data& y) {
   if constexpr (requires { p.merge(x, y); }) return p.merge(x, y);
   else return x + y;
 }
@@ -268,7 +269,7 @@ class Collapser {
 
   // Vertex i's policy data (absolute, in double), and setting it (after its
   // point: a stored quadric is relative to the point).
-  Data vertex_data(std::size_t i) const {
+  [[gnu::always_inline]] Data vertex_data(std::size_t i) const {
     if constexpr (relative) return data_[i].absolute(pos_[i]);
     else return data_[i];
   }
@@ -722,6 +723,7 @@ class Collapser {
     H start[2] = {H(), H()}; // halfedge(edge) and its opposite: where the walks end
     H x[2] = {H(), H()};     // side 0: the halfedges into target(start[0]), side 1: into its source
     int left[2] = {0, 0}; // steps allowed (0: stopped)
+    volatile bool sink = false; // a read's use, so that the compiler keeps it
   };
   void ahead_begin(std::size_t k) {
     ahead_.edge = k;
@@ -746,9 +748,16 @@ class Collapser {
       if (ahead_.left[s] == 0) continue;
       --ahead_.left[s];
       const H x = ahead_.x[s];
-      const std::size_t u = vi(source(x, g_));
-      prefetch(pos_.address(u));
-      if constexpr (!memoryless) prefetch(&data_[u]);
+      const V vu = source(x, g_);
+      // The first step's u is an end of the edge: the collapse's fan walks
+      // start at its halfedge(u) (a miss that stalled fan_keeps_normals).
+      if (x == ahead_.start[s]) {
+        if constexpr (HasNativePrefetch<G>) genmesh::detail::prefetch_links(vu, std::as_const(g_));
+        else ahead_.sink = halfedge(vu, g_) == H(); // a read ahead, where no hint can be had
+      }
+      const std::size_t u = vi(vu);
+      pos_.prefetch(u);
+      if constexpr (!memoryless) genmesh::detail::prefetch_object(&data_[u]);
       const H nx = opposite(next(x, g_), g_);
       genmesh::detail::prefetch_links(nx, std::as_const(g_));
       ahead_.x[s] = nx;
@@ -1562,7 +1571,7 @@ class Collapser {
     do {
       around_.push_back(x);
       queue_.prefetch(ei(edge(x, g_)));
-      prefetch(&data_[vi(source(x, g_))]);
+      genmesh::detail::prefetch_object(&data_[vi(source(x, g_))]);
       x = opposite(next(x, g_), g_);
     } while (x != start);
     for (const H y : around_) queue_.prefetch_entry(ei(edge(y, g_)));
