@@ -297,12 +297,15 @@ struct Plane_quadrics {
   [[gnu::always_inline]] Placement place(const Quadric& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
     Eigen::Vector3d x;
     if (q.minimizer(x, conditioning)) {
-      // Written out, the same numbers as 0.5 * (a + b): GCC called an
-      // out-of-line Eigen loop for that, whose stores the next line's loads
-      // waited on.
-      const Eigen::Vector3d m(0.5 * (a.x() + b.x()), 0.5 * (a.y() + b.y()), 0.5 * (a.z() + b.z()));
+      // The midpoint m = 0.5 * (a + b) and |x − m|² written out in scalars,
+      // the same operations in the same order as Eigen's ((d0² + d1²) + d2²):
+      // GCC called an out-of-line Eigen loop for m and read x, just
+      // written component by component, with 16-byte loads (a
+      // store-forwarding stall in every evaluation).
+      const double dx = x.x() - 0.5 * (a.x() + b.x()), dy = x.y() - 0.5 * (a.y() + b.y()),
+                   dz = x.z() - 0.5 * (a.z() + b.z());
       const double limit = max_distance_factor * max_distance_factor * (b - a).squaredNorm();
-      if ((x - m).squaredNorm() <= limit) return {q(x), x};
+      if (dx * dx + dy * dy + dz * dz <= limit) return {q(x), x};
     }
     return detail::simplification::best_of_ends(q, a, b);
   }
