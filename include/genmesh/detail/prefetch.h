@@ -1,5 +1,6 @@
 // genmesh/detail/prefetch.h — the cache hint behind every prefetch in genmesh
-// (the priority queue's, Halfedge_mesh's links, simplify's walk ahead).
+// (the priority queue's, Halfedge_mesh's links, simplify's walk ahead), and
+// the early read (touch) behind simplify's grid walk.
 #pragma once
 
 namespace genmesh::detail {
@@ -9,6 +10,21 @@ namespace genmesh::detail {
 inline void prefetch([[maybe_unused]] const void* p) {
 #if defined(__GNUC__) || defined(__clang__)
   __builtin_prefetch(p);
+#endif
+}
+
+/// A read of the byte at p whose value is dropped: brings its line in as a
+/// load does (no effect on any value). Where a loop's own reads are too many
+/// instructions apart for the processor to have more than a few lines in
+/// flight, a first loop of these has them all in flight at once; on the
+/// benchmark machine prefetch() hints in that place did not speed the loop
+/// up, these reads did (simplify's grid walk; docs/benchmarks.md, session 12).
+inline void touch(const void* p) {
+  const unsigned char c = *static_cast<const unsigned char*>(p);
+#if defined(__GNUC__) || defined(__clang__)
+  asm volatile("" : : "r"(c));
+#else
+  static_cast<void>(*static_cast<const volatile unsigned char*>(&c));
 #endif
 }
 
