@@ -68,6 +68,12 @@
 
 namespace genmesh::detail::simplification {
 
+#ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
+// For the tests: the ring certificates verified with a link vertex on the
+// border (see Collapser::verify_certificate).
+inline std::size_t verified_border_certificates = 0;
+#endif
+
 /// What simplify() needs of a mesh: lists, index maps, points and the
 /// collapse operation (native or generic).
 template <class G>
@@ -1033,8 +1039,10 @@ class Collapser {
   // as the mesh will be after the collapse. Does the projection along one
   // axis take U one-to-one into the plane, so that no two faces of U meet
   // beyond what they share? Then only the faces with no corner in ring_
-  // need testing; they are left in near_. The caller has checked that p, q
-  // and the link are off the border. U's faces other than the new ones are
+  // need testing; they are left in near_. The caller has checked that p and
+  // q are off the border (link vertices may be on it: their border edges are
+  // in ∂U, below; the shark's holes put an eighth of the searches there, each
+  // twice a certified one's cost before session 12). U's faces other than the new ones are
   // all in near_: each holds a link vertex, a corner of a new face, so its
   // box meets the new faces' union, which the grid query never misses.
   // Checked: (1) every face of U has a strictly positive orientation in the
@@ -1052,18 +1060,24 @@ class Collapser {
   // least once around x; by (3), the sum winds once: ∂U is one loop, and
   // meets every ray from x once — a simple closed curve, whose winding
   // number is 0 or 1 everywhere. So the projected faces of U have disjoint
-  // interiors. Then an edge e of U with a corner in the link or x (both of
-  // its faces are in U) has its two faces on either side of it: a small
-  // disc around a point inside e is covered by them, and any other face
-  // through that point would overlap them. Likewise the star of a link
-  // vertex or x (all in U) covers a disc around its point exactly once. A
+  // interiors. Then an edge e of U with a corner in the link or x has its
+  // faces in U (they hold that corner): two, on either side of it, which
+  // cover a small disc around a point inside e; or, a border edge, one, on
+  // the side where the winding number is 1 — e is in ∂U, across which it
+  // drops to 0: nothing of U lies on the other side near e. Either way any
+  // other face through a point inside e would overlap them. Likewise the
+  // star of x (all in U) covers a disc around x exactly once, and that of a
+  // link vertex w a disc or, on the border, the wedge between w's two
+  // border edges (both in ∂U, which passes w once; the winding number is 0
+  // outside the wedge near w): a face of U through w's point holds w. A
   // new face t has only such corners and edges, so the projection of any
   // other face u of U meets t's only on edges and corners they share; a
   // common point P of t and u projects onto one, Q, of a shared edge or
   // corner, which lies in t; t projects one-to-one (1), so P = Q: t and u
   // meet in what they share. Which edges form ∂U: an edge with a corner w
-  // in the link or x has both faces in U (they hold w; no border there), so
-  // it cancels; an edge ab with no such corner lies in a face (a, b, w) of U
+  // in the link or x has its faces in U (they hold w), so it cancels unless
+  // it is a border edge (at x never: p and q are off the border), which is
+  // in ∂U as its face runs it (add_border_edges); an edge ab with no such corner lies in a face (a, b, w) of U
   // with w in the link (a new face has its corners there), and cancels iff
   // its twin (b, a, z) has z in the link — then both appear: the boundary
   // edges are the edges b → a of the faces with one corner w in the link
@@ -1089,6 +1103,7 @@ class Collapser {
     const bool ok = classify_near(at);
     for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] &= static_cast<std::uint8_t>(~link);
     if (!ok) return false;
+    add_border_edges();
     int crossings = 0;
     for (const std::uint64_t e : ring_edges_) {
       const auto a = at(pos_[e >> 32]), b = at(pos_[e & 0xffffffffu]);
@@ -1098,11 +1113,32 @@ class Collapser {
     return crossings == 1;
   }
 
+  // The border edges at the link vertices on the border (border_link_: a
+  // halfedge into each) into ∂U, each as its face runs it, once.
+  void add_border_edges() {
+    for (const H into : border_link_) {
+      const std::uint64_t w = vi(target(into, g_));
+      H y = into;
+      do {
+        // y: s → w.
+        const bool out = border(y), in = !out && border(opposite(y, g_));
+        if (out || in) {
+          const std::uint64_t s = vi(source(y, g_));
+          const std::uint64_t e = out ? w << 32 | s : s << 32 | w;
+          if (std::find(ring_edges_.begin(), ring_edges_.end(), e) == ring_edges_.end()) ring_edges_.push_back(e);
+        }
+        y = opposite(next(y, g_), g_);
+      } while (y != into);
+    }
+  }
+
 #ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
   // For the tests: what ring_projects_one_to_one proved, checked by the
   // exact test — the new faces pairwise, and against every face the query
-  // found but those around p or q (`found`, by their corners).
+  // found but those around p or q (`found`, by their corners); counted in
+  // verified_border_certificates where a link vertex is on the border.
   void verify_certificate(const std::vector<std::array<std::uint32_t, 3>>& found) const {
+    if (!border_link_.empty()) ++verified_border_certificates;
     for (std::size_t i = 0; i < fresh_.size(); ++i)
       for (std::size_t j = i + 1; j < fresh_.size(); ++j)
         if (faces_intersect(fresh_[i], fresh_[j]))
@@ -1173,6 +1209,7 @@ class Collapser {
     // query finds them, and they go without reading their corners.
     fresh_.clear();
     ring_.assign({ip, iq});
+    border_link_.clear();
     star_faces_.clear();
     std::uint64_t star_filter = 0;
     bool border_star = false;
@@ -1184,6 +1221,7 @@ class Collapser {
         const std::uint32_t is = static_cast<std::uint32_t>(vi(source(y, g_)));
         if (is != ip && is != iq && std::find(ring_.begin() + 2, ring_.end(), is) == ring_.end()) {
           ring_.push_back(is);
+          if (vflags_[is] & on_border) border_link_.push_back(opposite(y, g_));
         }
         const F fy = face(y, g_);
         if (fy != boost::graph_traits<G>::null_face()) {
@@ -1244,9 +1282,7 @@ class Collapser {
     // With the ring certified, the new faces meet each other and every face
     // at a link vertex only in what they share: only the faces with no
     // corner in ring_ (p, q and the link) are left to test.
-    bool certified = !border_star;
-    for (std::size_t k = 2; certified && k < ring_.size(); ++k) certified = !(vflags_[ring_[k]] & on_border);
-    certified = certified && ring_projects_one_to_one(x);
+    const bool certified = !border_star && ring_projects_one_to_one(x);
     if (certified) {
 #ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
       verify_certificate(near_corners_);
@@ -1741,6 +1777,7 @@ class Collapser {
   std::vector<std::array<std::uint32_t, 3>> near_corners_; // near_'s faces not around p or q (corners)
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
   std::vector<std::uint32_t> ring_;   // p, q, then the link vertices (indices)
+  std::vector<H> border_link_;        // a halfedge into each link vertex on the border
   std::vector<std::uint32_t> star_faces_; // the faces around p and q (indices)
   std::vector<std::array<std::uint32_t, 3>> foreign_; // near faces with no corner in ring_ (corners)
   // Per vertex: has a border edge; for ring_projects_one_to_one, is p or q,
