@@ -328,23 +328,48 @@ class Collapser {
     if constexpr (requires { policy_.start(std::as_const(g_)); })
       policy_.start(std::as_const(g_)); // a policy that reads per-vertex data (Attribute_quadrics)
     // Faces in index order, corners from the lowest index: the same sums on
-    // every backend.
-    if constexpr (!memoryless) for (const F f : faces(g_)) {
-      const H h0 = halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
-      std::size_t a = vi(target(h0, g_)), b = vi(target(h1, g_)), c = vi(target(h2, g_));
-      if (b < a && b < c) {
-        std::tie(a, b, c) = std::make_tuple(b, c, a);
-      } else if (c < a && c < b) {
-        std::tie(a, b, c) = std::make_tuple(c, a, b);
+    // every backend. The corners of the face `lag` places ahead are read,
+    // and their points and data asked for, while this one's sums are made
+    // (one loop's reads of scattered links, points and data were a miss
+    // each).
+    if constexpr (!memoryless) {
+      constexpr std::size_t lag = 8;
+      std::array<std::array<std::size_t, 3>, lag> ahead;
+      auto read = [&](F f) {
+        const H h0 = halfedge(f, g_), h1 = next(h0, g_), h2 = next(h1, g_);
+        std::size_t a = vi(target(h0, g_)), b = vi(target(h1, g_)), c = vi(target(h2, g_));
+        if (b < a && b < c) {
+          std::tie(a, b, c) = std::make_tuple(b, c, a);
+        } else if (c < a && c < b) {
+          std::tie(a, b, c) = std::make_tuple(c, a, b);
+        }
+        for (const std::size_t v : {a, b, c}) {
+          pos_.prefetch(v);
+          genmesh::detail::prefetch_object(&data_[v]);
+        }
+        return std::array<std::size_t, 3>{a, b, c};
+      };
+      const auto fs = faces(g_);
+      auto lead = fs.begin();
+      const auto end = fs.end();
+      std::size_t read_n = 0, done = 0;
+      for (; lead != end && read_n < lag; ++lead) ahead[read_n++ % lag] = read(*lead);
+      while (done < read_n) {
+        const auto [a, b, c] = ahead[done % lag];
+        if (lead != end) {
+          ahead[read_n++ % lag] = read(*lead); // into the slot just taken
+          ++lead;
+        }
+        ++done;
+        Data q;
+        if constexpr (requires { policy_.face(a, pos_[a], b, pos_[b], c, pos_[c]); })
+          q = policy_.face(a, pos_[a], b, pos_[b], c, pos_[c]); // a policy that reads attributes
+        else
+          q = policy_.face(pos_[a], pos_[b], pos_[c]);
+        add_data(a, q);
+        add_data(b, q);
+        add_data(c, q);
       }
-      Data q;
-      if constexpr (requires { policy_.face(a, pos_[a], b, pos_[b], c, pos_[c]); })
-        q = policy_.face(a, pos_[a], b, pos_[b], c, pos_[c]); // a policy that reads attributes
-      else
-        q = policy_.face(pos_[a], pos_[b], pos_[c]);
-      add_data(a, q);
-      add_data(b, q);
-      add_data(c, q);
     }
     for (const E e : edges(g_)) {
       if constexpr (!native_edges) edesc_[ei(e)] = e;
@@ -389,8 +414,25 @@ class Collapser {
     queue_ = Queue(eb, Order{this});
     queue_.reserve(eb);
     Placement pl;
-    for (const E e : edges(g_))
+    // The ends' points and data of the edge `lag` places ahead asked for
+    // (each a miss otherwise).
+    constexpr int lag = 8;
+    const auto es = edges(g_);
+    auto lead = es.begin();
+    const auto end = es.end();
+    auto ask = [&] {
+      const H h = halfedge(*lead, g_);
+      for (const V v : {source(h, g_), target(h, g_)}) {
+        pos_.prefetch(vi(v));
+        if constexpr (!memoryless) genmesh::detail::prefetch_object(&data_[vi(v)]);
+      }
+      ++lead;
+    };
+    for (int i = 0; i < lag && lead != end; ++i) ask();
+    for (const E e : es) {
+      if (lead != end) ask();
       if (evaluate(halfedge(e, g_), pl)) queue_.push(ei(e), static_cast<float>(pl.cost));
+    }
   }
 
   // Schedule::passes. Each pass: every live edge's cost (the edges the
