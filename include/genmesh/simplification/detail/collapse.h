@@ -951,19 +951,37 @@ class Collapser {
     grid_.reset(1.0, 0); // frees the old cells first
     const double m = mean_edge_length();
     grid_.reset(m > 0 ? 6.0 * m : 1.0, face_bound);
+    // In blocks: the faces' corners, then their points asked for, then the
+    // boxes listed (face after face, the points' misses hardly overlapped:
+    // 832k armadillo → 10 %, the builds' samples 1184 → 408).
+    std::array<std::pair<std::uint32_t, std::array<std::uint32_t, 3>>, 64> block;
+    std::size_t n = 0;
+    auto list = [&] {
+      for (std::size_t i = 0; i < n; ++i)
+        for (const std::uint32_t c : block[i].second) prefetch(pos_.address(c));
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto& v = block[i].second;
+        grid_.insert(block[i].first, Box::of(pos_[v[0]], pos_[v[1]], pos_[v[2]]));
+      }
+      n = 0;
+    };
     for (const F f : faces(g_)) {
-      const auto t = face_triangle(corners_of(halfedge(f, g_)));
-      grid_.insert(static_cast<std::uint32_t>(fi(f)), Box::of(t.p[0], t.p[1], t.p[2]));
+      block[n++] = {static_cast<std::uint32_t>(fi(f)), corners_of(halfedge(f, g_))};
+      if (n == block.size()) list();
     }
+    list();
     grid_.shrink_to_fit();
-    grid_faces_ = faces_;
+    grid_faces_ = compact_faces_ = faces_;
   }
 
   // After a collapse onto q: q's faces go into the grid with their new
-  // boxes; when the faces have halved since the last build, rebuild with
-  // cells fitting the grown faces.
+  // boxes; when the faces have quartered since the last build, rebuild with
+  // cells fitting the grown faces; when they have halved since the last
+  // build or compaction, drop the stale entries and cut the lists to size
+  // (what bounds the grid's memory; until session 12 a rebuild at each
+  // halving: on the shark 6% more instructions, on the 208k armadillo 4%).
   void update_grid(V q) {
-    const bool rebuild = 2 * faces_ < grid_faces_;
+    const bool rebuild = 4 * faces_ < grid_faces_;
     const H start = halfedge(q, g_);
     H x = start;
     do {
@@ -979,7 +997,12 @@ class Collapser {
       }
       x = opposite(next(x, g_), g_);
     } while (x != start);
-    if (rebuild) build_grid(grid_.face_bound());
+    if (rebuild) {
+      build_grid(grid_.face_bound());
+    } else if (2 * faces_ < compact_faces_) {
+      grid_.compact();
+      compact_faces_ = faces_;
+    }
   }
 
   // Does the collapse of edge(h) into target(h) at x keep a flat star flat
@@ -1846,7 +1869,7 @@ class Collapser {
   std::vector<Fresh_plane> fresh_plane_;
   std::size_t exact_tests_ = 0; // faces_intersect calls (the filters decided the rest)
   Face_grid grid_;
-  std::size_t grid_faces_ = 0;
+  std::size_t grid_faces_ = 0, compact_faces_ = 0; // faces at the last build, at the last build or compaction
   std::vector<std::uint8_t> feature_, on_line_; // empty without features_
   std::vector<E> edesc_; // empty with native_edges
   // 32-bit keys and positions: edge indices fit (the mesh's own indices are
