@@ -442,6 +442,8 @@ void register_all() {
     reg("genmesh_Incidence_mesh", [=](benchmark::State& s) { genmesh_row<Incidence_mesh>(s, in, r); });
     reg("genmesh_Halfedge_mesh_no_guard",
         [=](benchmark::State& s) { genmesh_row<Halfedge_mesh>(s, in, r, false); });
+    reg("genmesh_Surface_mesh_no_guard",
+        [=](benchmark::State& s) { genmesh_row<Surface_mesh>(s, in, r, false); });
     // Schedule::passes (meshoptimizer's order: sorted passes, no heap), with and without the guard.
     reg("genmesh_Halfedge_mesh_passes",
         [=](benchmark::State& s) { genmesh_row<Halfedge_mesh>(s, in, r, true, genmesh::Schedule::passes); });

@@ -116,6 +116,16 @@ class Mutable_priority_queue {
     assert(!empty());
     return heap_.front().key;
   }
+  /// The key that pops after top() if the queue does not change meanwhile
+  /// (the smallest of the root's children). Precondition: size() >= 2.
+  std::size_t second() const {
+    assert(size() >= 2);
+    const std::size_t end = std::min(arity + 1, heap_.size());
+    std::size_t best = 1;
+    for (std::size_t c = 2; c < end; ++c)
+      if (before(heap_[c], heap_[best])) best = c;
+    return heap_[best].key;
+  }
   /// Its priority. Precondition: !empty().
   const Priority& top_priority() const {
     assert(!empty());

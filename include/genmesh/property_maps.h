@@ -172,6 +172,11 @@ public:
     if constexpr (native) return &points_[i];
     else return &copy_[i];
   }
+  /// Hints that point i will be read soon (every cache line it lies on).
+  void prefetch(std::size_t i) const {
+    if constexpr (native) detail::prefetch_object(&points_[i]);
+    else detail::prefetch_object(&copy_[i]);
+  }
   /// After the mesh's point i became p.
   void set(std::size_t i, const Eigen::Vector3d& p) {
     if constexpr (!native) copy_[i] = p;

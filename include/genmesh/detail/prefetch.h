@@ -13,6 +13,16 @@ inline void prefetch([[maybe_unused]] const void* p) {
 #endif
 }
 
+/// The hint for every cache line of *p, for a record of up to 64 bytes (up
+/// to two lines: a 40-byte record straddles two 64-byte lines at half of its
+/// array positions, and the first line's hint alone leaves the second a
+/// miss); for a larger one, its first line only.
+template <class T>
+inline void prefetch_object(const T* p) {
+  prefetch(p);
+  if constexpr (sizeof(T) > 1 && sizeof(T) <= 64) prefetch(reinterpret_cast<const char*>(p) + (sizeof(T) - 1));
+}
+
 /// A read of the byte at p whose value is dropped: brings its line in as a
 /// load does (no effect on any value). Where a loop's own reads are too many
 /// instructions apart for the processor to have more than a few lines in
