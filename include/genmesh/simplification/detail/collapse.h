@@ -979,7 +979,7 @@ class Collapser {
   // cells fitting the grown faces; when they have halved since the last
   // build or compaction, drop the stale entries and cut the lists to size
   // (what bounds the grid's memory; until session 12 a rebuild at each
-  // halving: on the shark 6% more instructions, on the 208k armadillo 4%).
+  // halving: 3-4% more instructions on the shark and the 208k armadillo).
   void update_grid(V q) {
     const bool rebuild = 4 * faces_ < grid_faces_;
     const H start = halfedge(q, g_);
@@ -1119,8 +1119,9 @@ class Collapser {
   // all in near_: each holds a link vertex, a corner of a new face, so its
   // box meets the new faces' union, which the grid query never misses.
   // Checked: (1) every face of U has a strictly positive orientation in the
-  // projection (orient2d, exact; the axis is the largest component of the
-  // new faces' normal sum, its two others swapped if that is negative);
+  // projection (orient2d, exact) along an axis (its two others swapped where
+  // the new faces' normal sum is negative along it; the axes are tried in
+  // turn, see below);
   // (2) every edge of ∂U, the 1-chain boundary of U, has a strictly
   // positive orientation seen from x, and (3) ∂U crosses the ray from x
   // along the first projected axis exactly once (upwards; a positive edge
@@ -1159,9 +1160,26 @@ class Collapser {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (const Fresh_plane& pl : fresh_plane_) sum += pl.n;
     const Eigen::Vector3d m = sum.cwiseAbs();
-    const int axis = m.x() >= m.y() && m.x() >= m.z() ? 0 : m.y() >= m.z() ? 1 : 2;
-    if (m[axis] == 0) return false;
-    const bool swap = sum[axis] < 0;
+    const int first = m.x() >= m.y() && m.x() >= m.z() ? 0 : m.y() >= m.z() ? 1 : 2;
+    // Marks: the link; cleared before returning. (near_corners_ holds no
+    // face around p or q.)
+    for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] |= link;
+    // Any axis along which (1)-(3) hold will do; the largest component of
+    // the normal sum first, then the other two (on the shark, 100 of the
+    // 258 searches a run that the first fails, most with an edge of ∂U not
+    // positive seen from x).
+    bool ok = false;
+    for (int i = 0; i < 3 && !ok; ++i) {
+      const int axis = (first + i) % 3;
+      if (m[axis] != 0) ok = projects_one_to_one_along(x, axis, sum[axis] < 0);
+    }
+    for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] &= static_cast<std::uint8_t>(~link);
+    return ok;
+  }
+
+  // Checks (1)-(3) of ring_projects_one_to_one along `axis`, the projection's
+  // two coordinates swapped if `swap` (the link marked).
+  bool projects_one_to_one_along(const Eigen::Vector3d& x, int axis, bool swap) {
     auto at = [axis, swap](const Eigen::Vector3d& p) {
       auto a = project2(p, axis);
       if (swap) std::swap(a[0], a[1]);
@@ -1170,12 +1188,7 @@ class Collapser {
     const auto px = at(x);
     for (const auto& t : fresh_)
       if (!positive(at(t.p[0]), px, at(t.p[2]))) return false;
-    // Marks: the link; cleared before returning. (near_corners_ holds no
-    // face around p or q.)
-    for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] |= link;
-    const bool ok = classify_near(at);
-    for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] &= static_cast<std::uint8_t>(~link);
-    if (!ok) return false;
+    if (!classify_near(at)) return false;
     add_border_edges();
     int crossings = 0;
     for (const std::uint64_t e : ring_edges_) {
