@@ -1694,7 +1694,8 @@ class Collapser {
     [[maybe_unused]] const Data merged_data = merged_data_of(ip, iq);
     vis_.on_collapse_placement(h, std::as_const(pl.position), pl.cost, std::as_const(g_));
     Point_writer writer{{}, this, pl.position};
-    if (!genmesh::collapse_edge(e, g_, writer)) return false; // can_collapse_edge said yes: never happens
+    // allowed() has tested can_collapse_edge: not again.
+    if (!genmesh::detail::lo::collapse_tested_edge(e, g_, writer)) return false; // never happens
     ahead_resume();
     pos_.set(iq, pl.position); // the mesh has it (Point_writer); a private copy follows
     if constexpr (!memoryless) {
