@@ -172,7 +172,7 @@ class Collapser {
       // The queue holds costs as floats (monotone: the order only gains
       // ties); the bound is checked on the exact cost, in collapse().
       const std::size_t ei = queue_.pop();
-      if (walk_ && !queue_.empty())
+      if (prefetch_ && !queue_.empty())
         ahead_begin(queue_.top(), queue_.size() >= 2, queue_.size() >= 2 ? queue_.second() : 0);
       if (collapse(ei)) {
         ++r.collapses;
@@ -306,6 +306,10 @@ class Collapser {
   // Policy data, locks and the queue.
   void initialize() {
     const std::size_t vb = pos_.size(), eb = index_bound(edge_index, g_);
+    // A small mesh stays in cache: its walks ahead and hints would be
+    // instructions only (mech-holes-shark, 10k faces → 10 %, unguarded: 5.8
+    // → 5.2 ms without the walks; the 52k-face armadillo: 34 → 35 ms).
+    prefetch_ = faces_ >= 20'000;
     data_.assign(vb, Stored{});
     // Lock bytes only where something can be locked: without them where()
     // reads no per-vertex byte (a cache miss a requeued edge at 832k faces).
@@ -344,10 +348,11 @@ class Collapser {
         } else if (c < a && c < b) {
           std::tie(a, b, c) = std::make_tuple(c, a, b);
         }
-        for (const std::size_t v : {a, b, c}) {
-          pos_.prefetch(v);
-          genmesh::detail::prefetch_object(&data_[v]);
-        }
+        if (prefetch_)
+          for (const std::size_t v : {a, b, c}) {
+            pos_.prefetch(v);
+            genmesh::detail::prefetch_object(&data_[v]);
+          }
         return std::array<std::size_t, 3>{a, b, c};
       };
       const auto fs = faces(g_);
@@ -411,10 +416,6 @@ class Collapser {
     const double deg = std::clamp(o_.max_normal_deviation, 0.0, 180.0);
     cos_max_ = std::max(0.0, std::cos(deg * std::numbers::pi / 180.0));
     cos_min_angle_ = o_.min_angle > 0 ? std::cos(std::min(o_.min_angle, 60.0) * std::numbers::pi / 180.0) : 1.0;
-    // A small mesh stays in cache: its walks ahead would be instructions
-    // only (mech-holes-shark, 10k faces → 10 %, unguarded: 5.8 → 5.2 ms
-    // without; the 52k-face armadillo: 34 → 35 ms without).
-    walk_ = faces_ >= 20'000;
     if (passes_) return;
     queue_ = Queue(eb, Order{this});
     queue_.reserve(eb);
@@ -433,9 +434,9 @@ class Collapser {
       }
       ++lead;
     };
-    for (int i = 0; i < lag && lead != end; ++i) ask();
+    for (int i = 0; prefetch_ && i < lag && lead != end; ++i) ask();
     for (const E e : es) {
-      if (lead != end) ask();
+      if (prefetch_ && lead != end) ask();
       if (evaluate(halfedge(e, g_), pl)) queue_.push(ei(e), static_cast<float>(pl.cost));
     }
   }
@@ -552,7 +553,7 @@ class Collapser {
         const std::size_t a = vi(source(h, g_)), b = vi(target(h, g_));
         if (touched_[a] | touched_[b]) continue;
         // The next two candidates still listed (of the next four) are walked ahead.
-        if (walk_) {
+        if (prefetch_) {
           std::uint32_t next_k[2] = {0, 0};
           int nn = 0;
           for (auto j = it + 1; j != end && nn < 2 && j - it <= 4; ++j)
@@ -814,7 +815,7 @@ class Collapser {
   // now hit the cache; the collapse may have changed the star), if the edge
   // lives; else none.
   void ahead_resume() {
-    if (!walk_) return;
+    if (!prefetch_) return;
     for (Ahead& a : ahead_) {
       if (a.left[0] + a.left[1] == 0 && a.start[0] == H()) continue;
       if (passes_ ? ecost_[a.edge] != Cost_mark::dirty : queue_.contains(a.edge)) ahead_restart(a);
@@ -829,7 +830,7 @@ class Collapser {
     a.left[0] = a.left[1] = 32; // a bound for the odd vertex of high degree
   }
   void ahead_step() {
-    if (!walk_) return;
+    if (!prefetch_) return;
     for (Ahead& a : ahead_) step(a);
   }
   void step(Ahead& a) {
@@ -1733,11 +1734,14 @@ class Collapser {
     around_.clear();
     do {
       around_.push_back(x);
-      queue_.prefetch(ei(edge(x, g_)));
-      genmesh::detail::prefetch_object(&data_[vi(source(x, g_))]);
+      if (prefetch_) {
+        queue_.prefetch(ei(edge(x, g_)));
+        genmesh::detail::prefetch_object(&data_[vi(source(x, g_))]);
+      }
       x = opposite(next(x, g_), g_);
     } while (x != start);
-    for (const H y : around_) queue_.prefetch_entry(ei(edge(y, g_)));
+    if (prefetch_)
+      for (const H y : around_) queue_.prefetch_entry(ei(edge(y, g_)));
     for (const H x : around_) {
       requeue(edge(x, g_));
       const V n = source(x, g_);
@@ -1884,7 +1888,7 @@ class Collapser {
   std::vector<std::uint64_t> ring_edges_; // ∂U (see ring_projects_one_to_one), from << 32 | to
   std::vector<H> around_;           // the survivor's incoming halfedges
   Ahead ahead_[2];                  // the next edges' fans, walked ahead (see ahead_begin)
-  bool walk_ = true;                // whether they are (not on a mesh that stays in cache)
+  bool prefetch_ = true; // whether walks ahead and hints pay (not on a mesh that stays in cache)
   volatile bool sink_ = false;      // a read's use, so that the compiler keeps it (ahead_step)
   std::vector<Box> fresh_box_;
   std::vector<std::uint32_t> near_; // faces a grid query found
