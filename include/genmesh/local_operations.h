@@ -418,6 +418,10 @@ bool can_collapse_edge(edge_descriptor_t<G> e, const G& g) {
   return true;
 }
 
+// collapse_edge's work without its test (below).
+template <MutableFaceGraph G, class Visitor = Mutation_visitor>
+vertex_descriptor_t<G> collapse_edge_unchecked(edge_descriptor_t<G> e, G& g, Visitor&& visitor = {});
+
 /// Collapses e into its target, as CGAL::Euler::collapse_edge: with pq =
 /// halfedge(e, g), p = source(pq) and q = target(pq), removes p, e, the
 /// (one or two) triangles of e and, in each, the edge at p (pt on top, merged
@@ -425,15 +429,14 @@ bool can_collapse_edge(edge_descriptor_t<G> e, const G& g) {
 /// had p as target now have q. q keeps its point.
 /// \returns q, or nullopt (refused, see can_collapse_edge).
 template <MutableFaceGraph G, class Visitor = Mutation_visitor>
-vertex_descriptor_t<G> collapse_edge_unchecked(edge_descriptor_t<G> e, G& g, Visitor&& visitor = {});
-template <MutableFaceGraph G, class Visitor = Mutation_visitor>
 std::optional<vertex_descriptor_t<G>> collapse_edge(edge_descriptor_t<G> e, G& g, Visitor&& visitor = {}) {
   if (!can_collapse_edge(e, g)) return std::nullopt;
   return collapse_edge_unchecked(e, g, std::forward<Visitor>(visitor));
 }
 
-/// collapse_edge without its test, for a caller that has just made it.
-/// Precondition: can_collapse_edge(e, g).
+// collapse_edge without its test, for a caller that has just made it
+// (internal, like everything in detail::lo: see collapse_tested_edge).
+// Precondition: can_collapse_edge(e, g).
 template <MutableFaceGraph G, class Visitor>
 vertex_descriptor_t<G> collapse_edge_unchecked(edge_descriptor_t<G> e, G& g, Visitor&& visitor) {
   namespace lo = detail::lo;
