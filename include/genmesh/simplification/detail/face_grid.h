@@ -194,9 +194,13 @@ class Face_grid {
   bool current(const Entry& e) const { return version_[e.face] == e.flags >> 3; }
 
   void drop_stale(Bucket& c) const {
+    // Without a branch on the version test, which goes either way.
     std::size_t kept = 0;
-    for (const Entry& e : c.list)
-      if (current(e)) c.list[kept++] = e;
+    for (std::size_t i = 0; i < c.list.size(); ++i) {
+      const Entry e = c.list[i];
+      c.list[kept] = e;
+      kept += current(e);
+    }
     c.list.resize(kept);
     c.clean = static_cast<std::uint32_t>(kept);
   }
