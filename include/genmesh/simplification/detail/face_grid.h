@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -42,6 +43,12 @@ struct Box {
 
 class Face_grid {
  public:
+  // A point in grid units: per axis its cell × 16 + its bin in the cell
+  // (see Axis), 20 bits; monotone in the coordinates, so that a box's
+  // corners in grid units are those of its corners.
+  using Point = std::array<std::uint32_t, 3>;
+  Point quantize(const Eigen::Vector3d& p) const { return {unit(p.x()), unit(p.y()), unit(p.z())}; }
+
   // Cells of size `cell`; faces (slots) numbered below `faces`.
   void reset(double cell, std::size_t faces) {
     inv_ = cell > 0 ? 1.0 / cell : 1.0;
@@ -74,9 +81,11 @@ class Face_grid {
 
   // Lists f with box b in every cell b overlaps; entries listed for f
   // before become stale (queries drop them).
-  void insert(std::uint32_t f, const Box& b) {
+  void insert(std::uint32_t f, const Box& b) { insert(f, quantize(b.lo), quantize(b.hi)); }
+  // The same for the box with corners lo, hi in grid units.
+  void insert(std::uint32_t f, const Point& lo, const Point& hi) {
     const std::uint8_t v = bump(f);
-    for_cells(b, [&](std::uint64_t k, const Entry& e) {
+    for_cells(lo, hi, [&](std::uint64_t k, const Entry& e) {
       Bucket& c = cell(k);
       auto& list = c.list;
       // A full list drops its stale entries before it grows: cells that no
@@ -106,18 +115,19 @@ class Face_grid {
   // once the cell has grown by an eighth since they were last dropped
   // (reading every entry's version is a third of the walk's time).
   void query(const Box& b, std::vector<std::uint32_t>& out) {
+    const Point lo = quantize(b.lo), hi = quantize(b.hi);
     // The cells' lists first, a read a line: the walk below runs a dozen
     // instructions an entry and has only a few lines in flight; these reads
     // have them all (832k armadillo → 10 %: the walk took ~60 % of its time
     // waiting on its entries; prefetch hints here did not help).
-    for_keys(b, [&](std::uint64_t k) {
+    for_keys(lo, hi, [&](std::uint64_t k) {
       const Bucket* c = find(k);
       if (c == nullptr) return;
       const char* at = reinterpret_cast<const char*>(c->list.data());
       const char* end = reinterpret_cast<const char*>(c->list.data() + c->list.size());
       for (; at < end; at += 64) genmesh::detail::touch(at);
     });
-    for_cells(b, [&](std::uint64_t key, const Entry& q) {
+    for_cells(lo, hi, [&](std::uint64_t key, const Entry& q) {
       Bucket* c = find(key);
       if (c == nullptr) return;
       // A face may be taken here if, on each axis, its box or the query's
@@ -194,21 +204,26 @@ class Face_grid {
   bool current(const Entry& e) const { return version_[e.face] == e.flags >> 3; }
 
   void drop_stale(Bucket& c) const {
+    // Without a branch on the version test, which goes either way.
     std::size_t kept = 0;
-    for (const Entry& e : c.list)
-      if (current(e)) c.list[kept++] = e;
+    for (std::size_t i = 0; i < c.list.size(); ++i) {
+      const Entry e = c.list[i];
+      c.list[kept] = e;
+      kept += current(e);
+    }
     c.list.resize(kept);
     c.clean = static_cast<std::uint32_t>(kept);
   }
 
   std::uint8_t bump(std::uint32_t f) { return version_[f] = static_cast<std::uint8_t>((version_[f] + 1) & 31); }
 
-  // Calls f(key, cell) for every cell b overlaps, where cell.flags says on
-  // which axes b's range starts at this cell (bit 0: x, 1: y, 2: z) and
-  // cell.x, .y, .z are the bins of the cell b covers (see Axis).
+  // Calls f(key, cell) for every cell the box [lo, hi] (grid units)
+  // overlaps, where cell.flags says on which axes its range starts at this
+  // cell (bit 0: x, 1: y, 2: z) and cell.x, .y, .z are the bins of the cell
+  // it covers (see Axis).
   template <class F>
-  void for_cells(const Box& b, F&& f) const {
-    const Axis ax = axis(b.lo.x(), b.hi.x()), ay = axis(b.lo.y(), b.hi.y()), az = axis(b.lo.z(), b.hi.z());
+  void for_cells(const Point& lo, const Point& hi, F&& f) const {
+    const Axis ax = axis(lo[0], hi[0]), ay = axis(lo[1], hi[1]), az = axis(lo[2], hi[2]);
     Entry e{};
     for (std::uint32_t x = ax.c0; x <= ax.c1; ++x) {
       e.x = ax.bins(x);
@@ -225,10 +240,10 @@ class Face_grid {
     }
   }
 
-  // Calls f(key) for every cell b overlaps.
+  // Calls f(key) for every cell the box [lo, hi] (grid units) overlaps.
   template <class F>
-  void for_keys(const Box& b, F&& f) const {
-    const Axis ax = axis(b.lo.x(), b.hi.x()), ay = axis(b.lo.y(), b.hi.y()), az = axis(b.lo.z(), b.hi.z());
+  void for_keys(const Point& lo, const Point& hi, F&& f) const {
+    const Axis ax = axis(lo[0], hi[0]), ay = axis(lo[1], hi[1]), az = axis(lo[2], hi[2]);
     for (std::uint32_t x = ax.c0; x <= ax.c1; ++x)
       for (std::uint32_t y = ay.c0; y <= ay.c1; ++y)
         for (std::uint32_t z = az.c0; z <= az.c1; ++z) f(key(x, y, z));
@@ -246,27 +261,19 @@ class Face_grid {
       return static_cast<std::uint8_t>((c == c0 ? b0 : 0) << 4 | (c == c1 ? b1 : 15));
     }
   };
-  Axis axis(double lo, double hi) const {
-    Axis a;
-    place(lo, a.c0, a.b0);
-    place(hi, a.c1, a.b1);
-    return a;
+  static Axis axis(std::uint32_t lo, std::uint32_t hi) {
+    return {lo >> 4, hi >> 4, static_cast<std::uint8_t>(lo & 15), static_cast<std::uint8_t>(hi & 15)};
   }
-  void place(double x, std::uint32_t& c, std::uint8_t& b) const {
+  // x in grid units: ⌊16 x / cell⌋ offset by half the cells' range,
+  // clamped into it (the cell ⌊x / cell⌋ and the bin ⌊16 (x / cell −
+  // cell)⌋ in one; until session 13 computed apart, as a floor and a
+  // difference, with the same results).
+  std::uint32_t unit(double x) const {
     // floor without the library call (s clamped into int64's range first).
-    const double s = std::clamp(x * inv_, -2.0 * half, 2.0 * half);
-    double f = static_cast<double>(static_cast<std::int64_t>(s));
-    if (f > s) f -= 1;
-    if (f < -static_cast<double>(half)) {
-      c = 0;
-      b = 0;
-    } else if (f > static_cast<double>(half - 1)) {
-      c = 2 * half - 1;
-      b = 15;
-    } else {
-      c = static_cast<std::uint32_t>(static_cast<std::int64_t>(f) + half);
-      b = static_cast<std::uint8_t>(std::min(15.0, (s - f) * 16.0));
-    }
+    const double s = std::clamp(x * inv_ * 16.0, -32.0 * half, 32.0 * half);
+    std::int64_t t = static_cast<std::int64_t>(s);
+    t -= static_cast<double>(t) > s;
+    return static_cast<std::uint32_t>(std::clamp<std::int64_t>(t + 16 * half, 0, 32 * half - 1));
   }
   static constexpr std::int64_t half = std::int64_t{1} << 15;
 
