@@ -72,10 +72,12 @@ int compare_magnitudes(const Int<A>& a, const Int<B>& b) {
   return 0;
 }
 
-// r = a + b (signed). R must hold the result (the callers' bounds above).
+// r = a + b, or a − b if `subtract` (signed). R must hold the result (the
+// callers' bounds above).
 template <std::size_t R, std::size_t A, std::size_t B>
-void add(const Int<A>& a, const Int<B>& b, Int<R>& r) {
-  if (a.negative == b.negative || a.n == 0 || b.n == 0) {
+void add(const Int<A>& a, const Int<B>& b, Int<R>& r, bool subtract = false) {
+  const bool b_negative = b.negative != subtract;
+  if (a.negative == b_negative || a.n == 0 || b.n == 0) {
     const bool a_longer = a.n >= b.n;
     const std::uint64_t* lw = a_longer ? a.w.data() : b.w.data();
     const std::uint64_t* sw = a_longer ? b.w.data() : a.w.data();
@@ -88,7 +90,7 @@ void add(const Int<A>& a, const Int<B>& b, Int<R>& r) {
     }
     r.n = ln;
     if (carry != 0) r.w[r.n++] = carry;
-    r.negative = a.n != 0 ? a.negative : b.negative;
+    r.negative = a.n != 0 ? a.negative : b_negative;
     if (r.n == 0) r.negative = false;
     return;
   }
@@ -111,13 +113,7 @@ void add(const Int<A>& a, const Int<B>& b, Int<R>& r) {
   }
   r.n = ln;
   while (r.n > 0 && r.w[r.n - 1] == 0) --r.n;
-  r.negative = c > 0 ? a.negative : b.negative;
-}
-
-template <std::size_t N>
-Int<N> negated(Int<N> a) {
-  a.negative = a.n != 0 && !a.negative;
-  return a;
+  r.negative = c > 0 ? a.negative : b_negative;
 }
 
 // r = a · b; R ≥ A + B.
@@ -165,17 +161,17 @@ inline bool unpack(double x, Unpacked& u) {
   return true;
 }
 
-// u as an integer in units of 2^e0 (e0 ≤ u.e).
-inline Int<difference_words> integer(const Unpacked& u, int e0) {
-  Int<difference_words> r;
-  if (u.m == 0) return r;
+// r = u as an integer in units of 2^e0 (e0 ≤ u.e).
+inline void integer(const Unpacked& u, int e0, Int<difference_words>& r) {
+  r.n = 0;
+  r.negative = false;
+  if (u.m == 0) return;
   const int shift = u.e - e0, word = shift / 64, bit = shift % 64;
   std::fill(r.w.begin(), r.w.begin() + word, std::uint64_t{0});
   r.w[static_cast<std::size_t>(word)] = u.m << bit;
   r.n = static_cast<std::size_t>(word) + 1;
   if (bit != 0 && (u.m >> (64 - bit)) != 0) r.w[r.n++] = u.m >> (64 - bit);
   r.negative = u.negative;
-  return r;
 }
 
 // The differences x[i] − x[0] (i = 1 … K−1) of one axis's coordinates, as
@@ -188,8 +184,12 @@ bool axis_differences(const std::array<double, K>& x, std::array<Int<difference_
     if (!unpack(x[i], u[i])) return false;
     if (u[i].m != 0) e0 = std::min(e0, u[i].e);
   }
-  const Int<difference_words> origin = integer(u[0], e0);
-  for (std::size_t i = 1; i < K; ++i) add(integer(u[i], e0), negated(origin), d[i - 1]);
+  Int<difference_words> origin, v;
+  integer(u[0], e0, origin);
+  for (std::size_t i = 1; i < K; ++i) {
+    integer(u[i], e0, v);
+    add(v, origin, d[i - 1], true);
+  }
   return true;
 }
 
@@ -208,16 +208,16 @@ inline int orient3d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Ei
   Int<determinant_words> t, s0, s1;
   multiply(by, cz, p);
   multiply(bz, cy, q);
-  add(p, negated(q), m);
+  add(p, q, m, true);
   multiply(dx, m, s0);
   multiply(bz, cx, p);
   multiply(bx, cz, q);
-  add(p, negated(q), m);
+  add(p, q, m, true);
   multiply(dy, m, t);
   add(s0, t, s1);
   multiply(bx, cy, p);
   multiply(by, cx, q);
-  add(p, negated(q), m);
+  add(p, q, m, true);
   multiply(dz, m, t);
   add(s1, t, s0);
   return s0.n == 0 ? 0 : s0.negative ? -1 : 1;
@@ -229,7 +229,7 @@ inline int orient2d(double ax, double ay, double bx, double by, double cx, doubl
   Int<minor_words> l, r, det;
   multiply(x[0], y[1], l);
   multiply(y[0], x[1], r);
-  add(l, negated(r), det);
+  add(l, r, det, true);
   return det.n == 0 ? 0 : det.negative ? -1 : 1;
 }
 
