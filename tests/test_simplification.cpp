@@ -39,6 +39,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <random>
 #include <set>
 #include <string>
 #include <string_view>
@@ -1121,6 +1122,56 @@ void cgal_garland_heckbert(genmesh_test::Surface_mesh& m, const Face_count_stop&
   namespace SMS = CGAL::Surface_mesh_simplification;
   SMS::GarlandHeckbert_plane_policies<genmesh_test::Surface_mesh, genmesh_test::Kernel> gh(m);
   SMS::edge_collapse(m, stop, CGAL::parameters::get_cost(gh.get_cost()).get_placement(gh.get_placement()));
+}
+
+// The guard's quick 2D orientation (a sign, or `unsure`) never gives a
+// wrong sign, down to the subnormals: collinear lattices nudged by an ulp
+// or not, and nearly collinear points, scaled by 2^k across the whole range,
+// against the exact orient2d. Before session 15 its filter had no underflow
+// term and it took an fma residual that rounded to zero for an exact
+// product: 2377 of these 16600 wrong.
+TEST(SimplificationGuard, SureOrientationNeverWrong) {
+  using genmesh::detail::simplification::sure_orient2d;
+  using genmesh::detail::simplification::unsure;
+  using P = std::array<double, 2>;
+  // 2^-540 · 2^-540 rounds to zero, and so does the fma residual.
+  EXPECT_EQ(sure_orient2d({0, 0}, {0x1p-540, 0}, {0, 0x1p-540}), unsure);
+  EXPECT_EQ(genmesh::detail::pred::orient2d(0, 0, 0x1p-540, 0, 0, 0x1p-540), 1);
+  EXPECT_EQ(sure_orient2d({0, 0}, {1, 0}, {0, 1}), 1);
+  EXPECT_EQ(sure_orient2d({0, 0}, {2, 2}, {1, 1}), 0); // a grid's collinear corners
+  std::mt19937_64 rng(3);
+  std::uniform_int_distribution<int> small(-8, 8), coin(0, 3);
+  std::uniform_real_distribution<double> unit(-1, 1), t01(0, 1);
+  std::size_t wrong = 0, sure = 0, n = 0;
+  for (int k = -1074; k <= 1000; ++k)
+    for (int r = 0; r < 8; ++r) {
+      std::array<double, 6> q;
+      if (r % 2) {
+        const double ox = small(rng), oy = small(rng), ux = small(rng), uy = small(rng);
+        for (int i = 0; i < 3; ++i) {
+          const double s = small(rng);
+          q[2 * i] = ox + s * ux;
+          q[2 * i + 1] = oy + s * uy;
+        }
+        if (coin(rng) < 2) q[4] = std::nextafter(q[4], coin(rng) ? INFINITY : -INFINITY);
+      } else {
+        for (int i = 0; i < 4; ++i) q[i] = unit(rng);
+        const double t = t01(rng);
+        q[4] = q[0] + t * (q[2] - q[0]);
+        q[5] = q[1] + t * (q[3] - q[1]);
+      }
+      for (double& x : q) x = std::ldexp(x, k);
+      const P a{q[0], q[1]}, b{q[2], q[3]}, c{q[4], q[5]};
+      const int s = sure_orient2d(a, b, c);
+      ++n;
+      if (s == unsure) continue;
+      ++sure;
+      if (s != genmesh::detail::pred::orient2d(a[0], a[1], b[0], b[1], c[0], c[1]) && ++wrong <= 5)
+        ADD_FAILURE() << "k = " << k << ": " << a[0] << ' ' << a[1] << " | " << b[0] << ' ' << b[1] << " | " << c[0]
+                      << ' ' << c[1];
+    }
+  EXPECT_EQ(wrong, 0u) << "of " << n;
+  EXPECT_GT(sure, n / 10);
 }
 
 // Symmetric Hausdorff distance to the input at the same face count, at 10%
