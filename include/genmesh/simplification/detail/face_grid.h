@@ -144,28 +144,22 @@ class Face_grid {
         const std::uint32_t t = (qhi - ((w >> 4) & 0x0f0f0fu)) & (((w & 0x0f0f0fu) | 0x101010u) - qlo);
         return (u & need) == need && (t & 0x101010u) == 0x101010u;
       };
-      if (list.size() > c->clean + c->clean / 8) {
-        std::size_t kept = 0;
-        for (const Entry e : list) {
-          if (!current(e)) continue; // stale: dropped
-          list[kept++] = e;
-          if (meets(e)) out.push_back(e.face);
-        }
-        list.resize(kept);
-        c->clean = static_cast<std::uint32_t>(kept);
-      } else {
-        // Without a branch on the bins' test, which goes either way at
-        // random (a seventh of the entries meet); then the versions of
-        // those that meet, reads that the processor overlaps.
-        if (hits_.size() < list.size()) hits_.resize(list.size());
-        std::size_t n = 0;
-        for (const Entry e : list) {
-          hits_[n] = e;
-          n += meets(e);
-        }
-        for (std::size_t i = 0; i < n; ++i)
-          if (current(hits_[i])) out.push_back(hits_[i].face);
+      // The stale entries first, when the list has grown by an eighth since
+      // they were last dropped: then the one walk below (until session 15
+      // a walk of its own that dropped them as it tested the bins; shark
+      // guarded, Halfedge_mesh: 2 % slower, 0.3 % fewer instructions).
+      if (list.size() > c->clean + c->clean / 8) drop_stale(*c);
+      // Without a branch on the bins' test, which goes either way at
+      // random (a seventh of the entries meet); then the versions of
+      // those that meet, reads that the processor overlaps.
+      if (hits_.size() < list.size()) hits_.resize(list.size());
+      std::size_t n = 0;
+      for (const Entry e : list) {
+        hits_[n] = e;
+        n += meets(e);
       }
+      for (std::size_t i = 0; i < n; ++i)
+        if (current(hits_[i])) out.push_back(hits_[i].face);
     });
   }
 
