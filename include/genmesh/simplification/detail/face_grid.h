@@ -39,9 +39,13 @@ struct Box {
   static Box of(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
     return {a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)};
   }
+  // Without a branch (the six comparisons combined by &): the guard's
+  // candidates test their boxes against each new face's, which goes either
+  // way (until session 15 with &&; shark → 10 %, guarded, Halfedge_mesh:
+  // 2-3 % slower, 1.2 % fewer instructions).
   bool overlaps(const Box& o) const {
-    return lo.x() <= o.hi.x() && o.lo.x() <= hi.x() && lo.y() <= o.hi.y() && o.lo.y() <= hi.y() &&
-           lo.z() <= o.hi.z() && o.lo.z() <= hi.z();
+    return (lo.x() <= o.hi.x()) & (o.lo.x() <= hi.x()) & (lo.y() <= o.hi.y()) & (o.lo.y() <= hi.y()) &
+           (lo.z() <= o.hi.z()) & (o.lo.z() <= hi.z());
   }
 };
 
