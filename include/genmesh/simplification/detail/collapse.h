@@ -1192,19 +1192,24 @@ class Collapser {
   // Checks (1)-(3) of ring_projects_one_to_one along `axis`, the projection's
   // two coordinates swapped if `swap` (the link marked).
   bool projects_one_to_one_along(const Eigen::Vector3d& x, int axis, bool swap) {
-    auto at = [axis, swap](const Eigen::Vector3d& p) {
-      auto a = project2(p, axis);
-      if (swap) std::swap(a[0], a[1]);
-      return a;
+    // The projection as the two coordinates it keeps (project2's, in its
+    // order unless swapped); `at` projects a vertex by index (until session
+    // 15 a point, through project2's switch and the swap at every call;
+    // shark → 10 %, guarded, Halfedge_mesh: 2 % slower, 0.8 % more
+    // instructions).
+    const int k0 = swap ? (axis + 2) % 3 : (axis + 1) % 3, k1 = swap ? (axis + 1) % 3 : (axis + 2) % 3;
+    auto at = [this, k0, k1](std::size_t v) -> std::array<double, 2> {
+      const Eigen::Vector3d& p = pos_[v];
+      return {p[k0], p[k1]};
     };
-    const auto px = at(x);
+    const std::array<double, 2> px{x[k0], x[k1]};
     for (const auto& t : fresh_)
-      if (!positive(at(t.p[0]), px, at(t.p[2]))) return false;
+      if (!positive(at(t.id[0]), px, at(t.id[2]))) return false;
     if (!classify_near(at)) return false;
     add_border_edges();
     int crossings = 0;
     for (const std::uint64_t e : ring_edges_) {
-      const auto a = at(pos_[e >> 32]), b = at(pos_[e & 0xffffffffu]);
+      const auto a = at(e >> 32), b = at(e & 0xffffffffu);
       if (!positive(px, a, b)) return false;
       crossings += a[1] < px[1] && px[1] <= b[1];
     }
@@ -1268,8 +1273,8 @@ class Collapser {
 
   // ring_projects_one_to_one's pass over near_corners_ (the faces the query
   // found, but p's and q's; the link marked): the faces with no corner in
-  // the link go to foreign_; the others must project positively (`at`), and
-  // give ∂U's edges.
+  // the link go to foreign_; the others must project positively (`at`, by
+  // vertex index), and give ∂U's edges.
   template <class At>
   bool classify_near(const At& at) {
     ring_edges_.clear();
@@ -1281,7 +1286,7 @@ class Collapser {
         foreign_.push_back(v);
         continue;
       }
-      if (!positive(at(pos_[v[0]]), at(pos_[v[1]]), at(pos_[v[2]]))) return false;
+      if (!positive(at(v[0]), at(v[1]), at(v[2]))) return false;
       if (std::popcount(l) > 1) continue;
       // The edge opposite the link corner, unless its twin came already.
       const int w = std::countr_zero(l);
