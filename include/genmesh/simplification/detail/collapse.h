@@ -1287,7 +1287,7 @@ class Collapser {
         continue;
       }
       if (!positive(at(v[0]), at(v[1]), at(v[2]))) return false;
-      if (std::popcount(l) > 1) continue;
+      if ((l & (l - 1)) != 0) continue; // two or three corners in the link
       // The edge opposite the link corner, unless its twin came already.
       const int w = std::countr_zero(l);
       const std::uint64_t from = v[(w + 1) % 3], to = v[(w + 2) % 3];
