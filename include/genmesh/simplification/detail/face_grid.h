@@ -210,6 +210,12 @@ class Face_grid {
   // again (its version is `gone`, which no entry has).
   void remove(std::uint32_t f) { version_[f] = gone; }
 
+  // Whether query() reads the cells' lists ahead (see there): not where
+  // the grid stays in cache, where the reads are instructions only (simplify:
+  // with its walks ahead, below 20k faces; the shark → 10 %, guarded,
+  // Halfedge_mesh: 1.2 % faster, 0.7 % fewer instructions without).
+  void read_ahead(bool on) { read_ahead_ = on; }
+
   // The face indices the grid was reset for.
   std::size_t face_bound() const { return version_.size(); }
 
@@ -226,13 +232,16 @@ class Face_grid {
     // instructions an entry and has only a few lines in flight; these reads
     // have them all (832k armadillo → 10 %: the walk took ~60 % of its time
     // waiting on its entries; prefetch hints here did not help).
-    for_keys(lo, hi, [&](std::uint64_t k) {
-      const Bucket* c = find(k);
-      if (c == nullptr) return;
-      const char* at = reinterpret_cast<const char*>(c->list.data());
-      const char* end = reinterpret_cast<const char*>(c->list.data() + c->list.size());
-      for (; at < end; at += 64) genmesh::detail::touch(at);
-    });
+    // Not where the grid stays in cache (read_ahead).
+    if (read_ahead_) {
+      for_keys(lo, hi, [&](std::uint64_t k) {
+        const Bucket* c = find(k);
+        if (c == nullptr) return;
+        const char* at = reinterpret_cast<const char*>(c->list.data());
+        const char* end = reinterpret_cast<const char*>(c->list.data() + c->list.size());
+        for (; at < end; at += 64) genmesh::detail::touch(at);
+      });
+    }
     for_cells(lo, hi, [&](std::uint64_t key, const Entry& q) {
       Bucket* c = find(key);
       if (c == nullptr) return;
@@ -390,6 +399,7 @@ class Face_grid {
   std::size_t used_ = 0;
   std::vector<std::uint8_t> version_; // per face, 5 bits
   std::vector<Entry> hits_;           // query()'s
+  bool read_ahead_ = true;
 };
 
 } // namespace genmesh::detail::simplification
