@@ -1228,3 +1228,101 @@ TEST(SimplificationOracle, HausdorffNoWorseThanCgalLindstromTurk) {
 }
 
 } // namespace
+
+// The grid's walk over a cell: the SSE2 path (four entries at a time) and
+// the scalar reference pick the same entries, and an entry is picked iff,
+// on every axis, its bins meet the query's and its range or the query's
+// starts in the cell.
+TEST(FaceGrid, VectorWalkEqualsScalarWalk) {
+  namespace ds = genmesh::detail::simplification;
+  std::uint64_t state = 0x2545F4914F6CDD1Dull;
+  auto next = [&state] {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return state;
+  };
+  auto bins = [&next] {
+    const auto a = static_cast<std::uint8_t>(next() & 15), b = static_cast<std::uint8_t>(next() & 15);
+    return static_cast<std::uint8_t>(std::min(a, b) << 4 | std::max(a, b));
+  };
+  auto meet = [](std::uint8_t a, std::uint8_t b) { return (a >> 4) <= (b & 15) && (b >> 4) <= (a & 15); };
+  std::vector<ds::Grid_entry> entries(64), scalar(64), vector(64);
+  for (int round = 0; round < 2000; ++round) {
+    const std::size_t n = static_cast<std::size_t>(round % 41);
+    for (std::size_t i = 0; i < n; ++i)
+      entries[i] = {static_cast<std::uint32_t>(next()), static_cast<std::uint8_t>(next()), bins(), bins(), bins()};
+    const std::uint8_t qf = static_cast<std::uint8_t>(next() & 7), qx = bins(), qy = bins(), qz = bins();
+    const std::uint32_t qw = qx | qy << 8 | qz << 16;
+    const ds::Grid_probe probe{static_cast<std::uint32_t>(7 & ~qf), (qw & 0x0f0f0fu) | 0x101010u,
+                               (qw >> 4) & 0x0f0f0fu};
+    const std::size_t k = ds::grid_select_scalar(entries.data(), n, probe, scalar.data());
+    std::size_t expected = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto& e = entries[i];
+      const bool picked = ((e.flags | qf) & 7) == 7 && meet(e.x, qx) && meet(e.y, qy) && meet(e.z, qz);
+      ASSERT_EQ(picked, ds::grid_meets(e, probe));
+      if (picked) {
+        ASSERT_EQ(scalar[expected++].face, e.face);
+      }
+    }
+    ASSERT_EQ(k, expected);
+#if defined(__SSE2__)
+    ASSERT_EQ(ds::grid_select_sse2(entries.data(), n, probe, vector.data()), k);
+    for (std::size_t i = 0; i < k; ++i) {
+      ASSERT_EQ(vector[i].face, scalar[i].face);
+      ASSERT_EQ(vector[i].flags, scalar[i].flags);
+      ASSERT_EQ(vector[i].x, scalar[i].x);
+      ASSERT_EQ(vector[i].y, scalar[i].y);
+      ASSERT_EQ(vector[i].z, scalar[i].z);
+    }
+#endif
+  }
+}
+
+// A grid query returns every face whose box meets the query box, each once,
+// also after faces moved (stale entries) and were removed.
+TEST(FaceGrid, QueryFindsEveryMeetingFaceOnce) {
+  namespace ds = genmesh::detail::simplification;
+  std::uint64_t state = 0x9E3779B97F4A7C15ull;
+  auto uniform = [&state] {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return static_cast<double>(state >> 11) * 0x1.0p-53;
+  };
+  auto box = [&uniform] {
+    const Eigen::Vector3d c(10 * uniform(), 10 * uniform(), 10 * uniform());
+    const Eigen::Vector3d r(1.5 * uniform(), 1.5 * uniform(), 1.5 * uniform());
+    return ds::Box{c - r, c + r};
+  };
+  constexpr std::size_t faces = 400;
+  std::vector<ds::Box> boxes(faces);
+  std::vector<bool> live(faces, true);
+  ds::Face_grid grid;
+  grid.reset(1.0, faces);
+  for (std::uint32_t f = 0; f < faces; ++f) grid.insert(f, boxes[f] = box());
+  std::vector<std::uint32_t> found;
+  for (int round = 0; round < 300; ++round) {
+    const std::uint32_t f = static_cast<std::uint32_t>(uniform() * faces);
+    if (round % 7 == 0) {
+      grid.remove(f);
+      live[f] = false;
+    } else if (live[f]) {
+      grid.insert(f, boxes[f] = box());
+    }
+    const ds::Box q = box();
+    found.clear();
+    grid.query(q, found);
+    std::vector<int> times(faces, 0);
+    for (const std::uint32_t g : found) ++times[g];
+    for (std::uint32_t g = 0; g < faces; ++g) {
+      ASSERT_LE(times[g], 1) << "face " << g;
+      if (!live[g]) {
+        ASSERT_EQ(times[g], 0) << "face " << g;
+      } else if (boxes[g].overlaps(q)) {
+        ASSERT_EQ(times[g], 1) << "face " << g;
+      }
+    }
+  }
+}

@@ -28,6 +28,10 @@
 #include <utility>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace genmesh::detail::simplification {
 
 struct Box {
@@ -35,11 +39,113 @@ struct Box {
   static Box of(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
     return {a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)};
   }
+  // Without a branch (the six comparisons combined by &): the guard's
+  // candidates test their boxes against each new face's, which goes either
+  // way (until session 15 with &&; shark → 10 %, guarded, Halfedge_mesh:
+  // 2-3 % slower, 1.2 % fewer instructions).
   bool overlaps(const Box& o) const {
-    return lo.x() <= o.hi.x() && o.lo.x() <= hi.x() && lo.y() <= o.hi.y() && o.lo.y() <= hi.y() &&
-           lo.z() <= o.hi.z() && o.lo.z() <= hi.z();
+    return (lo.x() <= o.hi.x()) & (o.lo.x() <= hi.x()) & (lo.y() <= o.hi.y()) & (o.lo.y() <= hi.y()) &
+           (lo.z() <= o.hi.z()) & (o.lo.z() <= hi.z());
   }
 };
+
+// A face listed in a grid cell: its slot, its version when listed (5 bits)
+// and on which axes its range starts at this cell (3 bits), and per axis
+// the bins of the cell (16 a side) its box covers there (lo << 4 | hi).
+// (Face_grid::for_cells describes a cell of a box in one, without face or
+// version.)
+struct Grid_entry {
+  std::uint32_t face;
+  std::uint8_t flags;
+  std::uint8_t x, y, z;
+};
+// grid_flags_and_bins reads the bytes after the face as one word, and the
+// vector walk four entries as two 16-byte loads.
+static_assert(sizeof(Grid_entry) == 8 && offsetof(Grid_entry, flags) == 4 && offsetof(Grid_entry, x) == 5 &&
+              offsetof(Grid_entry, y) == 6 && offsetof(Grid_entry, z) == 7);
+
+// flags | x << 8 | y << 16 | z << 24: on a little-endian machine the
+// upper half of the entry's bytes, one shift (the fields one by one
+// cost the walk a dozen instructions an entry).
+inline std::uint32_t grid_flags_and_bins(const Grid_entry& e) {
+  if constexpr (std::endian::native == std::endian::little)
+    return static_cast<std::uint32_t>(std::bit_cast<std::uint64_t>(e) >> 32);
+  else
+    return e.flags | std::uint32_t{e.x} << 8 | std::uint32_t{e.y} << 16 | std::uint32_t{e.z} << 24;
+}
+
+// What a query asks of a cell's entries: the axes (flags) on which an
+// entry's range must start in the cell (those where the query's does
+// not), and the query's bins, a byte an axis, as `hi` (its upper bins |
+// 0x10 each) and `lo` (its lower bins). An entry's bins meet the query's
+// on every axis iff each byte of
+//   (hi − entry's lower bins) & ((entry's upper bins | 0x10) − lo)
+// has bit 4 set (16 + a − b ≥ 16 iff a ≥ b; no borrow crosses a byte).
+struct Grid_probe {
+  std::uint32_t need, hi, lo;
+};
+
+inline bool grid_meets(const Grid_entry& e, const Grid_probe& q) {
+  const std::uint32_t u = grid_flags_and_bins(e), w = u >> 8;
+  const std::uint32_t t = (q.hi - ((w >> 4) & 0x0f0f0fu)) & (((w & 0x0f0f0fu) | 0x101010u) - q.lo);
+  return (u & q.need) == q.need && (t & 0x101010u) == 0x101010u;
+}
+
+// Copies the entries of [e, e + n) that meet q to out (room for n), in
+// order; returns how many. Without a branch on the test, which goes
+// either way at random (a seventh of a walk's entries meet). The
+// reference; grid_select_sse2 gives the same.
+inline std::size_t grid_select_scalar(const Grid_entry* e, std::size_t n, const Grid_probe& q, Grid_entry* out) {
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    out[k] = e[i];
+    k += grid_meets(e[i], q);
+  }
+  return k;
+}
+
+#if defined(__SSE2__)
+// grid_select_scalar four entries at a time: their words of flags and
+// bins gathered from two loads into one register, tested together (shark
+// → 10 %, guarded, Halfedge_mesh: 7 % faster, 5.6 % fewer instructions).
+inline std::size_t grid_select_sse2(const Grid_entry* e, std::size_t n, const Grid_probe& q, Grid_entry* out) {
+  static_assert(std::endian::native == std::endian::little);
+  const __m128i need = _mm_set1_epi32(static_cast<int>(q.need)), hi = _mm_set1_epi32(static_cast<int>(q.hi)),
+                lo = _mm_set1_epi32(static_cast<int>(q.lo));
+  const __m128i low4 = _mm_set1_epi32(0x0f0f0f), bit4 = _mm_set1_epi32(0x101010);
+  std::size_t i = 0, k = 0;
+  for (; i + 4 <= n; i += 4) {
+    const __m128 a = _mm_castsi128_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(e + i)));
+    const __m128 b = _mm_castsi128_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(e + i + 2)));
+    // The odd 32-bit words: each entry's flags and bins (little-endian).
+    const __m128i u = _mm_castps_si128(_mm_shuffle_ps(a, b, _MM_SHUFFLE(3, 1, 3, 1)));
+    const __m128i w = _mm_srli_epi32(u, 8);
+    const __m128i t = _mm_and_si128(_mm_sub_epi32(hi, _mm_and_si128(_mm_srli_epi32(w, 4), low4)),
+                                    _mm_sub_epi32(_mm_or_si128(_mm_and_si128(w, low4), bit4), lo));
+    const __m128i ok = _mm_and_si128(_mm_cmpeq_epi32(_mm_and_si128(u, need), need),
+                                     _mm_cmpeq_epi32(_mm_and_si128(t, bit4), bit4));
+    const unsigned m = static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(ok)));
+    out[k] = e[i];
+    k += m & 1;
+    out[k] = e[i + 1];
+    k += (m >> 1) & 1;
+    out[k] = e[i + 2];
+    k += (m >> 2) & 1;
+    out[k] = e[i + 3];
+    k += m >> 3;
+  }
+  return k + grid_select_scalar(e + i, n - i, q, out + k);
+}
+#endif
+
+// grid_select_scalar, four entries at a time where SSE2 is there.
+inline std::size_t grid_select(const Grid_entry* e, std::size_t n, const Grid_probe& q, Grid_entry* out) {
+#if defined(__SSE2__)
+  return grid_select_sse2(e, n, q, out);
+#else
+  return grid_select_scalar(e, n, q, out);
+#endif
+}
 
 class Face_grid {
  public:
@@ -104,6 +210,12 @@ class Face_grid {
   // again (its version is `gone`, which no entry has).
   void remove(std::uint32_t f) { version_[f] = gone; }
 
+  // Whether query() reads the cells' lists ahead (see there): not where
+  // the grid stays in cache, where the reads are instructions only (simplify:
+  // with its walks ahead, below 20k faces; the shark → 10 %, guarded,
+  // Halfedge_mesh: 1.2 % faster, 0.7 % fewer instructions without).
+  void read_ahead(bool on) { read_ahead_ = on; }
+
   // The face indices the grid was reset for.
   std::size_t face_bound() const { return version_.size(); }
 
@@ -120,68 +232,41 @@ class Face_grid {
     // instructions an entry and has only a few lines in flight; these reads
     // have them all (832k armadillo → 10 %: the walk took ~60 % of its time
     // waiting on its entries; prefetch hints here did not help).
-    for_keys(lo, hi, [&](std::uint64_t k) {
-      const Bucket* c = find(k);
-      if (c == nullptr) return;
-      const char* at = reinterpret_cast<const char*>(c->list.data());
-      const char* end = reinterpret_cast<const char*>(c->list.data() + c->list.size());
-      for (; at < end; at += 64) genmesh::detail::touch(at);
-    });
+    // Not where the grid stays in cache (read_ahead).
+    if (read_ahead_) {
+      for_keys(lo, hi, [&](std::uint64_t k) {
+        const Bucket* c = find(k);
+        if (c == nullptr) return;
+        const char* at = reinterpret_cast<const char*>(c->list.data());
+        const char* end = reinterpret_cast<const char*>(c->list.data() + c->list.size());
+        for (; at < end; at += 64) genmesh::detail::touch(at);
+      });
+    }
     for_cells(lo, hi, [&](std::uint64_t key, const Entry& q) {
       Bucket* c = find(key);
       if (c == nullptr) return;
       // A face may be taken here if, on each axis, its box or the query's
       // starts in this cell (see above).
-      const std::uint8_t need = static_cast<std::uint8_t>(7 & ~q.flags);
-      // The bins, a byte an axis: an entry's meet the query's on every axis
-      // iff each byte of t below has bit 4 set (16 + a − b ≥ 16 iff a ≥ b;
-      // no borrow crosses a byte).
       const std::uint32_t qw = q.x | q.y << 8 | q.z << 16;
-      const std::uint32_t qhi = (qw & 0x0f0f0fu) | 0x101010u, qlo = (qw >> 4) & 0x0f0f0fu;
+      const Grid_probe probe{static_cast<std::uint32_t>(7 & ~q.flags), (qw & 0x0f0f0fu) | 0x101010u,
+                             (qw >> 4) & 0x0f0f0fu};
       auto& list = c->list;
-      auto meets = [&](const Entry& e) {
-        const std::uint32_t u = flags_and_bins(e), w = u >> 8;
-        const std::uint32_t t = (qhi - ((w >> 4) & 0x0f0f0fu)) & (((w & 0x0f0f0fu) | 0x101010u) - qlo);
-        return (u & need) == need && (t & 0x101010u) == 0x101010u;
-      };
-      if (list.size() > c->clean + c->clean / 8) {
-        std::size_t kept = 0;
-        for (const Entry e : list) {
-          if (!current(e)) continue; // stale: dropped
-          list[kept++] = e;
-          if (meets(e)) out.push_back(e.face);
-        }
-        list.resize(kept);
-        c->clean = static_cast<std::uint32_t>(kept);
-      } else {
-        // Without a branch on the bins' test, which goes either way at
-        // random (a seventh of the entries meet); then the versions of
-        // those that meet, reads that the processor overlaps.
-        if (hits_.size() < list.size()) hits_.resize(list.size());
-        std::size_t n = 0;
-        for (const Entry e : list) {
-          hits_[n] = e;
-          n += meets(e);
-        }
-        for (std::size_t i = 0; i < n; ++i)
-          if (current(hits_[i])) out.push_back(hits_[i].face);
-      }
+      // The stale entries first, when the list has grown by an eighth since
+      // they were last dropped: then the one walk below (until session 15
+      // a walk of its own that dropped them as it tested the bins; shark
+      // guarded, Halfedge_mesh: 2 % slower, 0.3 % fewer instructions).
+      if (list.size() > c->clean + c->clean / 8) drop_stale(*c);
+      // The entries whose bins meet the query's, then the versions of
+      // those, reads that the processor overlaps.
+      if (hits_.size() < list.size()) hits_.resize(list.size());
+      const std::size_t n = grid_select(list.data(), list.size(), probe, hits_.data());
+      for (std::size_t i = 0; i < n; ++i)
+        if (current(hits_[i])) out.push_back(hits_[i].face);
     });
   }
 
  private:
-  // A face listed in a cell: its slot, its version when listed (5 bits)
-  // and on which axes its range starts at this cell (3 bits), and per axis
-  // the bins of the cell (16 a side) its box covers there (lo << 4 | hi).
-  // (for_cells describes a cell of a box in one, without face or version.)
-  struct Entry {
-    std::uint32_t face;
-    std::uint8_t flags;
-    std::uint8_t x, y, z;
-  };
-  // flags_and_bins reads the bytes after the face as one word.
-  static_assert(sizeof(Entry) == 8 && offsetof(Entry, flags) == 4 && offsetof(Entry, x) == 5 &&
-                offsetof(Entry, y) == 6 && offsetof(Entry, z) == 7);
+  using Entry = Grid_entry;
   struct Bucket {
     std::uint64_t key = empty;
     std::vector<Entry> list;
@@ -190,16 +275,6 @@ class Face_grid {
   static constexpr std::uint64_t empty = ~std::uint64_t{0};
   static constexpr std::uint8_t gone = 0x80; // a removed face's version: above every entry's (5 bits)
 
-
-  // flags | x << 8 | y << 16 | z << 24: on a little-endian machine the
-  // upper half of the entry's bytes, one shift (the fields one by one
-  // cost the walk a dozen instructions an entry).
-  static std::uint32_t flags_and_bins(const Entry& e) {
-    if constexpr (std::endian::native == std::endian::little)
-      return static_cast<std::uint32_t>(std::bit_cast<std::uint64_t>(e) >> 32);
-    else
-      return e.flags | std::uint32_t{e.x} << 8 | std::uint32_t{e.y} << 16 | std::uint32_t{e.z} << 24;
-  }
 
   bool current(const Entry& e) const { return version_[e.face] == e.flags >> 3; }
 
@@ -324,6 +399,7 @@ class Face_grid {
   std::size_t used_ = 0;
   std::vector<std::uint8_t> version_; // per face, 5 bits
   std::vector<Entry> hits_;           // query()'s
+  bool read_ahead_ = true;
 };
 
 } // namespace genmesh::detail::simplification
