@@ -1280,6 +1280,40 @@ TEST(FaceGrid, VectorWalkEqualsScalarWalk) {
   }
 }
 
+// A box's corners in grid units, all six coordinates at once (SSE2), are
+// those of quantize() point by point: at random, on bin and cell borders
+// (whole and just off), far out of the grid's range, infinite and NaN.
+TEST(FaceGrid, BoxCornersEqualPointwise) {
+  namespace ds = genmesh::detail::simplification;
+  std::uint64_t state = 0x6A09E667F3BCC909ull;
+  auto next = [&state] {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return state;
+  };
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  const double special[] = {0.0, -0.0, 1.0 / 16, -1.0 / 16, 0.3, -0.3, 2048.0, -2048.0, 2047.99, -2048.01,
+                            2047.9375, -2047.9375, 32768.0, -32768.0, 32767.9375, 32767.99, -32768.01, 1e9, -1e9, 1e300, -1e300, inf, -inf, nan, 5e-324};
+  for (const double cell : {1.0, 0.37, 1e-6}) {
+    ds::Face_grid grid;
+    grid.reset(cell, 0);
+    auto coordinate = [&] {
+      const std::uint64_t r = next();
+      if (r % 4 == 0) return special[(r >> 8) % std::size(special)] * cell;
+      if (r % 4 == 1) return static_cast<double>(static_cast<std::int64_t>(r >> 20) % 1100000 - 550000) / 16 * cell;
+      return (static_cast<double>(r >> 11) * 0x1.0p-53 - 0.5) * 8192 * cell;
+    };
+    for (int round = 0; round < 20000; ++round) {
+      const ds::Box b{{coordinate(), coordinate(), coordinate()}, {coordinate(), coordinate(), coordinate()}};
+      ds::Face_grid::Point lo, hi;
+      grid.quantize(b, lo, hi);
+      ASSERT_EQ(lo, grid.quantize(b.lo)) << b.lo.transpose();
+      ASSERT_EQ(hi, grid.quantize(b.hi)) << b.hi.transpose();
+    }
+  }
+}
+
 // A grid query returns every face whose box meets the query box, each once,
 // also after faces moved (stale entries) and were removed.
 TEST(FaceGrid, QueryFindsEveryMeetingFaceOnce) {

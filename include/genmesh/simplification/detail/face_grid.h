@@ -154,6 +154,38 @@ class Face_grid {
   // corners in grid units are those of its corners.
   using Point = std::array<std::uint32_t, 3>;
   Point quantize(const Eigen::Vector3d& p) const { return {unit(p.x()), unit(p.y()), unit(p.z())}; }
+  // A box's corners in grid units, the same as quantize(b.lo), quantize(b.hi):
+  // where SSE2 is there, the six coordinates two at a time (session 15;
+  // shark → 10 %, guarded, Halfedge_mesh: unit() took ~20 instructions a
+  // coordinate; 2.6 % fewer instructions in all, the time within noise).
+  void quantize(const Box& b, Point& lo, Point& hi) const {
+#if defined(__SSE2__)
+    const __m128d scale = _mm_set1_pd(inv_), sixteen = _mm_set1_pd(16.0);
+    // floor(s) + 16 half clamped into [0, 32 half) is floor(s') + 16 half
+    // with s' = s clamped into [−16 half, 16 half − 1] (int32 range); max
+    // first, which takes the bound where s is NaN (as unit() ends at 0).
+    const __m128d least = _mm_set1_pd(-16.0 * half), most = _mm_set1_pd(16.0 * half - 1);
+    const __m128i offset = _mm_set1_epi32(static_cast<int>(16 * half));
+    auto units = [&](__m128d x) {
+      const __m128d s = _mm_min_pd(_mm_max_pd(_mm_mul_pd(_mm_mul_pd(x, scale), sixteen), least), most);
+      const __m128i t = _mm_cvttpd_epi32(s); // toward zero, in the low two lanes
+      // −1 where the truncation rounded up (s < 0, not whole): the 64-bit
+      // masks' low halves into the low two lanes.
+      const __m128i up = _mm_shuffle_epi32(_mm_castpd_si128(_mm_cmpgt_pd(_mm_cvtepi32_pd(t), s)), _MM_SHUFFLE(3, 3, 2, 0));
+      return _mm_add_epi32(_mm_add_epi32(t, up), offset);
+    };
+    const __m128i a = units(_mm_loadu_pd(b.lo.data())), c = units(_mm_set_pd(b.hi.x(), b.lo.z())),
+                  d = units(_mm_loadu_pd(b.hi.data() + 1));
+    alignas(16) std::uint32_t u[8];
+    _mm_store_si128(reinterpret_cast<__m128i*>(u), _mm_unpacklo_epi64(a, c));
+    _mm_store_si128(reinterpret_cast<__m128i*>(u + 4), d);
+    lo = {u[0], u[1], u[2]};
+    hi = {u[3], u[4], u[5]};
+#else
+    lo = quantize(b.lo);
+    hi = quantize(b.hi);
+#endif
+  }
 
   // Cells of size `cell`; faces (slots) numbered below `faces`.
   void reset(double cell, std::size_t faces) {
@@ -187,7 +219,11 @@ class Face_grid {
 
   // Lists f with box b in every cell b overlaps; entries listed for f
   // before become stale (queries drop them).
-  void insert(std::uint32_t f, const Box& b) { insert(f, quantize(b.lo), quantize(b.hi)); }
+  void insert(std::uint32_t f, const Box& b) {
+    Point lo, hi;
+    quantize(b, lo, hi);
+    insert(f, lo, hi);
+  }
   // The same for the box with corners lo, hi in grid units.
   void insert(std::uint32_t f, const Point& lo, const Point& hi) {
     const std::uint8_t v = bump(f);
@@ -231,7 +267,8 @@ class Face_grid {
   // once the cell has grown by an eighth since they were last dropped
   // (reading every entry's version is a third of the walk's time).
   void query(const Box& b, std::vector<std::uint32_t>& out) {
-    const Point lo = quantize(b.lo), hi = quantize(b.hi);
+    Point lo, hi;
+    quantize(b, lo, hi);
     // The cells' lists first, a read a line: the walk below runs a dozen
     // instructions an entry and has only a few lines in flight; these reads
     // have them all (832k armadillo → 10 %: the walk took ~60 % of its time
