@@ -1229,19 +1229,27 @@ TEST(SimplificationOracle, HausdorffNoWorseThanCgalLindstromTurk) {
 
 } // namespace
 
+// The FaceGrid tests' random numbers: xorshift64, the same sequence on
+// every platform (std's distributions are not).
+namespace {
+struct Xorshift64 {
+  std::uint64_t state;
+  std::uint64_t operator()() {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return state;
+  }
+};
+} // namespace
+
 // The grid's walk over a cell: the SSE2 path (four entries at a time) and
 // the scalar reference pick the same entries, and an entry is picked iff,
 // on every axis, its bins meet the query's and its range or the query's
 // starts in the cell.
 TEST(FaceGrid, VectorWalkEqualsScalarWalk) {
   namespace ds = genmesh::detail::simplification;
-  std::uint64_t state = 0x2545F4914F6CDD1Dull;
-  auto next = [&state] {
-    state ^= state << 13;
-    state ^= state >> 7;
-    state ^= state << 17;
-    return state;
-  };
+  Xorshift64 next{0x2545F4914F6CDD1Dull};
   auto bins = [&next] {
     const auto a = static_cast<std::uint8_t>(next() & 15), b = static_cast<std::uint8_t>(next() & 15);
     return static_cast<std::uint8_t>(std::min(a, b) << 4 | std::max(a, b));
@@ -1285,13 +1293,7 @@ TEST(FaceGrid, VectorWalkEqualsScalarWalk) {
 // (whole and just off), far out of the grid's range, infinite and NaN.
 TEST(FaceGrid, BoxCornersEqualPointwise) {
   namespace ds = genmesh::detail::simplification;
-  std::uint64_t state = 0x6A09E667F3BCC909ull;
-  auto next = [&state] {
-    state ^= state << 13;
-    state ^= state >> 7;
-    state ^= state << 17;
-    return state;
-  };
+  Xorshift64 next{0x6A09E667F3BCC909ull};
   const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
   const double special[] = {0.0, -0.0, 1.0 / 16, -1.0 / 16, 0.3, -0.3, 2048.0, -2048.0, 2047.99, -2048.01,
                             2047.9375, -2047.9375, 32768.0, -32768.0, 32767.9375, 32767.99, -32768.01, 1e9, -1e9, 1e300, -1e300, inf, -inf, nan, 5e-324};
@@ -1318,13 +1320,8 @@ TEST(FaceGrid, BoxCornersEqualPointwise) {
 // also after faces moved (stale entries) and were removed.
 TEST(FaceGrid, QueryFindsEveryMeetingFaceOnce) {
   namespace ds = genmesh::detail::simplification;
-  std::uint64_t state = 0x9E3779B97F4A7C15ull;
-  auto uniform = [&state] {
-    state ^= state << 13;
-    state ^= state >> 7;
-    state ^= state << 17;
-    return static_cast<double>(state >> 11) * 0x1.0p-53;
-  };
+  Xorshift64 next{0x9E3779B97F4A7C15ull};
+  auto uniform = [&next] { return static_cast<double>(next() >> 11) * 0x1.0p-53; };
   auto box = [&uniform] {
     const Eigen::Vector3d c(10 * uniform(), 10 * uniform(), 10 * uniform());
     const Eigen::Vector3d r(1.5 * uniform(), 1.5 * uniform(), 1.5 * uniform());
