@@ -264,8 +264,9 @@ inline int orient3d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Ei
 }
 
 /// Sign of (b − a) × (c − a) for 2D points (x, y): +1 counter-clockwise.
-/// Exact for finite input; 0 if a coordinate is not finite.
-inline int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
+/// Exact for finite input; 0 if a coordinate is not finite. Inlined: the
+/// filter is a few instructions, and the guard calls it in its inner loops.
+[[gnu::always_inline]] inline int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
   const double ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
   const double l = ux * vy, r = uy * vx;
   const double det = l - r;
