@@ -1347,6 +1347,7 @@ class Collapser {
     // The link (p and q's neighbours but p and q, each once) is gathered on
     // the way for ring_projects_one_to_one.
     fresh_.clear();
+    star_.clear();
     ring_.assign({ip, iq});
     border_link_.clear();
     bool border_star = false;
@@ -1362,6 +1363,7 @@ class Collapser {
         }
         const F fy = face(y, g_);
         if (fy != boost::graph_traits<G>::null_face()) {
+          star_.push_back(static_cast<std::uint32_t>(fi(fy)));
           const std::uint32_t iw = static_cast<std::uint32_t>(vi(target(next(y, g_), g_)));
           if (is != ip && is != iq && iw != ip && iw != iq) fresh_.push_back({{pos_[is], x, pos_[iw]}, {is, iq, iw}});
         } else {
@@ -1396,8 +1398,12 @@ class Collapser {
     // The grid's entries pick the faces whose box may meet the new ones'
     // (without reading them); the ring certificate (most searches) leaves
     // those with no corner in the ring; their points give the candidates.
+    // Not the faces around p or q (star_, from the walk; the two of the
+    // edge twice): the grid passes over them.
     near_.clear();
+    for (const std::uint32_t f : star_) grid_.hide(f);
     grid_.query(all, near_);
+    for (const std::uint32_t f : star_) grid_.show(f);
     // Their corners, read from the mesh in a loop of its own (nearly every
     // read is a cache miss; independent iterations let the processor
     // overlap them). (The grid lists live faces only.)
@@ -1409,18 +1415,12 @@ class Collapser {
     // faces' chains.
     near_h_.clear();
     for (const std::uint32_t f : near_) near_h_.push_back(face_halfedge(f));
-    // The faces around p or q (a corner p or q) go as their corners are
-    // read, without a branch (until session 15 by their indices, gathered
-    // in the walk above, with a 64-bit filter; shark → 10 %, guarded,
-    // Halfedge_mesh: 4 % slower, 1 % more instructions).
+    // (Until session 16 the query found the faces around p or q too, a
+    // quarter of them on the shark, and they went as their corners were
+    // read, without a branch; before session 15 by their indices, with a
+    // 64-bit filter.)
     near_corners_.resize(near_h_.size());
-    std::size_t kept = 0;
-    for (const H fh : near_h_) {
-      const std::array<std::uint32_t, 3> v = corners_of(fh);
-      near_corners_[kept] = v;
-      kept += (v[0] != ip) & (v[1] != ip) & (v[2] != ip) & (v[0] != iq) & (v[1] != iq) & (v[2] != iq);
-    }
-    near_corners_.resize(kept);
+    for (std::size_t i = 0; i < near_h_.size(); ++i) near_corners_[i] = corners_of(near_h_[i]);
     for (const auto& v : near_corners_)
       for (const std::uint32_t c : v) {
         prefetch(pos_.address(c));
@@ -1917,6 +1917,7 @@ class Collapser {
   volatile bool sink_ = false;      // a read's use, so that the compiler keeps it (ahead_step)
   std::vector<Box> fresh_box_;
   std::vector<std::uint32_t> near_; // faces a grid query found
+  std::vector<std::uint32_t> star_; // the faces around p and q (indices; the two of the edge twice)
   std::vector<H> near_h_;           // a halfedge of each
   std::vector<std::pair<std::array<std::uint32_t, 3>, std::uint64_t>> candidates_; // corners, new faces its box meets
   std::vector<Fresh_plane> fresh_plane_;
