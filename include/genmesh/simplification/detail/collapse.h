@@ -1314,7 +1314,10 @@ class Collapser {
     foreign_.clear();
     for (const std::array<std::uint32_t, 3>& v : near_corners_) {
       const std::uint8_t m0 = vflags_[v[0]], m1 = vflags_[v[1]], m2 = vflags_[v[2]];
-      const unsigned l = (m0 & link ? 1u : 0u) | (m1 & link ? 2u : 0u) | (m2 & link ? 4u : 0u);
+      // (Shifts and selects, not `?:` and `% 3` as until session 16: shark →
+      // 10 %, guarded, Surface_mesh: 0.35 % fewer instructions.)
+      static_assert(link == 4);
+      const unsigned l = (m0 & link) >> 2 | (m1 & link) >> 1 | (m2 & link);
       if (l == 0) {
         foreign_.push_back(v);
         continue;
@@ -1323,7 +1326,7 @@ class Collapser {
       if ((l & (l - 1)) != 0) continue; // two or three corners in the link
       // The edge opposite the link corner, unless its twin came already.
       const int w = std::countr_zero(l);
-      const std::uint64_t from = v[(w + 1) % 3], to = v[(w + 2) % 3];
+      const std::uint64_t from = v[w == 2 ? 0 : w + 1], to = v[w == 0 ? 2 : w - 1];
       const auto twin = std::find(ring_edges_.begin(), ring_edges_.end(), to << 32 | from);
       if (twin != ring_edges_.end()) {
         *twin = ring_edges_.back();
@@ -1404,28 +1407,32 @@ class Collapser {
     for (const std::uint32_t f : star_) grid_.hide(f);
     grid_.query(all, near_);
     for (const std::uint32_t f : star_) grid_.show(f);
-    // Their corners, read from the mesh in a loop of its own (nearly every
-    // read is a cache miss; independent iterations let the processor
-    // overlap them). (The grid lists live faces only.)
-    if constexpr (!native_faces)
-      for (const std::uint32_t f : near_) prefetch(&face_h_[f]);
-    // In stages, each a loop of independent reads (a face's halfedge, then
-    // its corners, then their points and flags asked for): one loop per face
-    // chains three dependent misses, and the processor overlaps only a few
-    // faces' chains.
-    near_h_.clear();
-    for (const std::uint32_t f : near_) near_h_.push_back(face_halfedge(f));
-    // (Until session 16 the query found the faces around p or q too, a
-    // quarter of them on the shark, and they went as their corners were
-    // read, without a branch; before session 15 by their indices, with a
-    // 64-bit filter.)
-    near_corners_.resize(near_h_.size());
-    for (std::size_t i = 0; i < near_h_.size(); ++i) near_corners_[i] = corners_of(near_h_[i]);
-    for (const auto& v : near_corners_)
-      for (const std::uint32_t c : v) {
-        prefetch(pos_.address(c));
-        prefetch(&vflags_[c]);
-      }
+    // Their corners, read from the mesh. Where the mesh is large (prefetch_),
+    // in stages, each a loop of independent reads (a face's halfedge, then
+    // its corners, then their points and flags asked for): nearly every read
+    // is a cache miss, one loop per face chains three dependent misses, and
+    // the processor overlaps only a few faces' chains. Where it stays in
+    // cache, in one loop without the hints (until session 16 staged there
+    // too; shark → 10 %, guarded, Surface_mesh: 1 % fewer instructions).
+    // (The grid lists live faces only. Until session 16 the query found the
+    // faces around p or q too, a quarter of them on the shark, and they went
+    // as their corners were read, without a branch; before session 15 by
+    // their indices, with a 64-bit filter.)
+    near_corners_.resize(near_.size());
+    if (prefetch_) {
+      if constexpr (!native_faces)
+        for (const std::uint32_t f : near_) prefetch(&face_h_[f]);
+      near_h_.clear();
+      for (const std::uint32_t f : near_) near_h_.push_back(face_halfedge(f));
+      for (std::size_t i = 0; i < near_h_.size(); ++i) near_corners_[i] = corners_of(near_h_[i]);
+      for (const auto& v : near_corners_)
+        for (const std::uint32_t c : v) {
+          prefetch(pos_.address(c));
+          prefetch(&vflags_[c]);
+        }
+    } else {
+      for (std::size_t i = 0; i < near_.size(); ++i) near_corners_[i] = corners_of(face_halfedge(near_[i]));
+    }
     // With the ring certified, the new faces meet each other and every face
     // at a link vertex only in what they share: only the faces with no
     // corner in ring_ (p, q and the link) are left to test.
