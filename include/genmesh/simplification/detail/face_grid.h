@@ -160,20 +160,6 @@ class Face_grid {
   // coordinate; 2.6 % fewer instructions in all, the time within noise).
   void quantize(const Box& b, Point& lo, Point& hi) const {
 #if defined(__SSE2__)
-    const __m128d scale = _mm_set1_pd(inv_), sixteen = _mm_set1_pd(16.0);
-    // floor(s) + 16 half clamped into [0, 32 half) is floor(s') + 16 half
-    // with s' = s clamped into [−16 half, 16 half − 1] (int32 range); max
-    // first, which takes the bound where s is NaN (as unit() ends at 0).
-    const __m128d least = _mm_set1_pd(-16.0 * half), most = _mm_set1_pd(16.0 * half - 1);
-    const __m128i offset = _mm_set1_epi32(static_cast<int>(16 * half));
-    auto units = [&](__m128d x) {
-      const __m128d s = _mm_min_pd(_mm_max_pd(_mm_mul_pd(_mm_mul_pd(x, scale), sixteen), least), most);
-      const __m128i t = _mm_cvttpd_epi32(s); // toward zero, in the low two lanes
-      // −1 where the truncation rounded up (s < 0, not whole): the 64-bit
-      // masks' low halves into the low two lanes.
-      const __m128i up = _mm_shuffle_epi32(_mm_castpd_si128(_mm_cmpgt_pd(_mm_cvtepi32_pd(t), s)), _MM_SHUFFLE(3, 3, 2, 0));
-      return _mm_add_epi32(_mm_add_epi32(t, up), offset);
-    };
     const __m128i a = units(_mm_loadu_pd(b.lo.data())), c = units(_mm_set_pd(b.hi.x(), b.lo.z())),
                   d = units(_mm_loadu_pd(b.hi.data() + 1));
     alignas(16) std::uint32_t u[8];
@@ -184,6 +170,45 @@ class Face_grid {
 #else
     lo = quantize(b.lo);
     hi = quantize(b.hi);
+#endif
+  }
+  // quantize(p), where SSE2 is there two coordinates at a time (what
+  // simplify's update_grid asks of every corner around a survivor).
+  Point units(const Eigen::Vector3d& p) const {
+#if defined(__SSE2__)
+    alignas(16) std::uint32_t u[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(u),
+                    _mm_unpacklo_epi64(units(_mm_loadu_pd(p.data())), units(_mm_set1_pd(p.z()))));
+    return {u[0], u[1], u[2]};
+#else
+    return quantize(p);
+#endif
+  }
+
+  // Per axis, whether a lies below b (bit i) or above it (bit 4 + i).
+  static std::uint32_t sides(const Point& a, const Point& b) {
+    std::uint32_t m = 0;
+    for (int i = 0; i < 3; ++i) m |= std::uint32_t{a[i] < b[i]} << i | std::uint32_t{a[i] > b[i]} << (4 + i);
+    return m;
+  }
+  // units(p), and sides(a, units(p)) in `s`: where SSE2 is there, the
+  // compares packed (scalar, sides() took ~40 instructions).
+  Point units(const Eigen::Vector3d& p, const Point& a, std::uint32_t& s) const {
+#if defined(__SSE2__)
+    const __m128i u = _mm_unpacklo_epi64(units(_mm_loadu_pd(p.data())), units(_mm_set1_pd(p.z())));
+    const __m128i v = _mm_setr_epi32(static_cast<int>(a[0]), static_cast<int>(a[1]), static_cast<int>(a[2]),
+                                     static_cast<int>(a[2]));
+    // Grid units are below 2^20: the signed compares order them. Lane 3
+    // repeats lane 2 (z): its bits (3, 7) are cleared.
+    const __m128i below = _mm_cmplt_epi32(v, u), above = _mm_cmpgt_epi32(v, u);
+    s = static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_packs_epi16(_mm_packs_epi32(below, above), _mm_setzero_si128()))) & 0x77u;
+    alignas(16) std::uint32_t w[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(w), u);
+    return {w[0], w[1], w[2]};
+#else
+    const Point u = quantize(p);
+    s = sides(a, u);
+    return u;
 #endif
   }
 
@@ -392,6 +417,21 @@ class Face_grid {
   static Axis axis(std::uint32_t lo, std::uint32_t hi) {
     return {lo >> 4, hi >> 4, static_cast<std::uint8_t>(lo & 15), static_cast<std::uint8_t>(hi & 15)};
   }
+#if defined(__SSE2__)
+  // unit() of the two lanes of x, in the low two 32-bit lanes.
+  __m128i units(__m128d x) const {
+    // floor(s) + 16 half clamped into [0, 32 half) is floor(s') + 16 half
+    // with s' = s clamped into [−16 half, 16 half − 1] (int32 range); max
+    // first, which takes the bound where s is NaN (as unit() ends at 0).
+    const __m128d least = _mm_set1_pd(-16.0 * half), most = _mm_set1_pd(16.0 * half - 1);
+    const __m128d s = _mm_min_pd(_mm_max_pd(_mm_mul_pd(_mm_mul_pd(x, _mm_set1_pd(inv_)), _mm_set1_pd(16.0)), least), most);
+    const __m128i t = _mm_cvttpd_epi32(s); // toward zero, in the low two lanes
+    // −1 where the truncation rounded up (s < 0, not whole): the 64-bit
+    // masks' low halves into the low two lanes.
+    const __m128i up = _mm_shuffle_epi32(_mm_castpd_si128(_mm_cmpgt_pd(_mm_cvtepi32_pd(t), s)), _MM_SHUFFLE(3, 3, 2, 0));
+    return _mm_add_epi32(_mm_add_epi32(t, up), _mm_set1_epi32(static_cast<int>(16 * half)));
+  }
+#endif
   // x in grid units: ⌊16 x / cell⌋ offset by half the cells' range,
   // clamped into it (the cell ⌊x / cell⌋ and the bin ⌊16 (x / cell −
   // cell)⌋ in one; until session 13 computed apart, as a floor and a
