@@ -42,6 +42,10 @@
 #include <cmath>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace genmesh {
 
 /// A symmetric error quadric Q(x) = xᵀAx + 2bᵀx + c, 10 doubles.
@@ -185,6 +189,122 @@ struct Relative_quadric {
     q.c = static_cast<double>(c) + x * (ao0 - 2.0 * b0) + y * (ao1 - 2.0 * b1) + z * (ao2 - 2.0 * b2);
     return q;
   }
+
+  /// p.absolute(op) + q.absolute(oq): the same operations on the same values
+  /// (so the same doubles), with SSE2 the two shifts side by side in the
+  /// two lanes of each register (simplify sums two ends' quadrics for every
+  /// edge it evaluates).
+  [[gnu::always_inline]] static Quadric absolute_sum(const Relative_quadric& p, const Eigen::Vector3d& op,
+                                                     const Relative_quadric& q, const Eigen::Vector3d& oq) {
+#if defined(__SSE2__)
+    const Lanes l = Lanes::absolute(p, op, q, oq);
+    // Two terms' lanes summed at once: (u_p + u_q, v_p + v_q).
+    auto sum = [](__m128d u, __m128d v) { return _mm_add_pd(_mm_unpacklo_pd(u, v), _mm_unpackhi_pd(u, v)); };
+    Quadric r;
+    _mm_storeu_pd(&r.a00, sum(l.a00, l.a01));
+    _mm_storeu_pd(&r.a02, sum(l.a02, l.a11));
+    _mm_storeu_pd(&r.a12, sum(l.a12, l.a22));
+    _mm_storeu_pd(&r.b0, sum(l.b0, l.b1));
+    _mm_storeu_pd(&r.b2, sum(l.b2, l.c));
+    return r;
+#else
+    return p.absolute(op) + q.absolute(oq);
+#endif
+  }
+
+  /// p = of(p.absolute(op) + d, op) and q = of(q.absolute(oq) + d, oq), the
+  /// same operations on the same values; with SSE2 side by side, as
+  /// absolute_sum. p and q must be different objects.
+  [[gnu::always_inline]] static void add_to_two(Relative_quadric& p, const Eigen::Vector3d& op, Relative_quadric& q,
+                                                const Eigen::Vector3d& oq, const Quadric& d) {
+#if defined(__SSE2__)
+    Lanes l = Lanes::absolute(p, op, q, oq);
+    l.a00 = _mm_add_pd(l.a00, _mm_set1_pd(d.a00));
+    l.a01 = _mm_add_pd(l.a01, _mm_set1_pd(d.a01));
+    l.a02 = _mm_add_pd(l.a02, _mm_set1_pd(d.a02));
+    l.a11 = _mm_add_pd(l.a11, _mm_set1_pd(d.a11));
+    l.a12 = _mm_add_pd(l.a12, _mm_set1_pd(d.a12));
+    l.a22 = _mm_add_pd(l.a22, _mm_set1_pd(d.a22));
+    l.b0 = _mm_add_pd(l.b0, _mm_set1_pd(d.b0));
+    l.b1 = _mm_add_pd(l.b1, _mm_set1_pd(d.b1));
+    l.b2 = _mm_add_pd(l.b2, _mm_set1_pd(d.b2));
+    l.c = _mm_add_pd(l.c, _mm_set1_pd(d.c));
+    // of(), lane by lane.
+    const __m128d x = l.x, y = l.y, z = l.z;
+    const __m128d g0 = _mm_add_pd(
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(l.a00, x), _mm_mul_pd(l.a01, y)), _mm_mul_pd(l.a02, z)), l.b0);
+    const __m128d g1 = _mm_add_pd(
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(l.a01, x), _mm_mul_pd(l.a11, y)), _mm_mul_pd(l.a12, z)), l.b1);
+    const __m128d g2 = _mm_add_pd(
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(l.a02, x), _mm_mul_pd(l.a12, y)), _mm_mul_pd(l.a22, z)), l.b2);
+    __m128d co = _mm_add_pd(_mm_add_pd(_mm_mul_pd(x, g0), _mm_mul_pd(y, g1)), _mm_mul_pd(z, g2));
+    co = _mm_add_pd(_mm_add_pd(_mm_add_pd(_mm_add_pd(co, _mm_mul_pd(l.b0, x)), _mm_mul_pd(l.b1, y)),
+                               _mm_mul_pd(l.b2, z)),
+                    l.c);
+    // Rounded to float: (t_p, u_p, t_q, u_q) for each two terms, then p's
+    // four and q's four.
+    auto two = [](__m128d t, __m128d u) { return _mm_unpacklo_ps(_mm_cvtpd_ps(t), _mm_cvtpd_ps(u)); };
+    const __m128 t0 = two(l.a00, l.a01), t2 = two(l.a02, l.a11), t4 = two(l.a12, l.a22), t6 = two(g0, g1),
+                 t8 = two(g2, co);
+    _mm_storeu_ps(&p.a00, _mm_movelh_ps(t0, t2));
+    _mm_storeu_ps(&q.a00, _mm_movehl_ps(t2, t0));
+    _mm_storeu_ps(&p.a12, _mm_movelh_ps(t4, t6)); // a12 a22 b0 b1
+    _mm_storeu_ps(&q.a12, _mm_movehl_ps(t6, t4));
+    p.b2 = _mm_cvtss_f32(t8);
+    p.c = _mm_cvtss_f32(_mm_shuffle_ps(t8, t8, 1));
+    q.b2 = _mm_cvtss_f32(_mm_shuffle_ps(t8, t8, 2));
+    q.c = _mm_cvtss_f32(_mm_shuffle_ps(t8, t8, 3));
+#else
+    p = of(p.absolute(op) + d, op);
+    q = of(q.absolute(oq) + d, oq);
+#endif
+  }
+
+ private:
+#if defined(__SSE2__)
+  // Two relative quadrics made absolute side by side: lane 0 p's term,
+  // lane 1 q's, and the origins' coordinates.
+  struct Lanes {
+    __m128d a00, a01, a02, a11, a12, a22, b0, b1, b2, c;
+    __m128d x, y, z;
+
+    [[gnu::always_inline]] static Lanes absolute(const Relative_quadric& p, const Eigen::Vector3d& op,
+                                                 const Relative_quadric& q, const Eigen::Vector3d& oq) {
+      // The floats come in as (p, q) pairs: terms 0-3, 4-5 (of 4-7) and 6-9
+      // (the last four, so that no load passes the end of the struct).
+      const __m128 p0 = _mm_loadu_ps(&p.a00), q0 = _mm_loadu_ps(&q.a00);
+      const __m128 p4 = _mm_loadu_ps(&p.a12), q4 = _mm_loadu_ps(&q.a12);
+      const __m128 p6 = _mm_loadu_ps(&p.b0), q6 = _mm_loadu_ps(&q.b0);
+      const __m128 l0 = _mm_unpacklo_ps(p0, q0), h0 = _mm_unpackhi_ps(p0, q0);
+      const __m128 l4 = _mm_unpacklo_ps(p4, q4), l6 = _mm_unpacklo_ps(p6, q6), h6 = _mm_unpackhi_ps(p6, q6);
+      Lanes r;
+      r.a00 = _mm_cvtps_pd(l0);
+      r.a01 = _mm_cvtps_pd(_mm_movehl_ps(l0, l0));
+      r.a02 = _mm_cvtps_pd(h0);
+      r.a11 = _mm_cvtps_pd(_mm_movehl_ps(h0, h0));
+      r.a12 = _mm_cvtps_pd(l4);
+      r.a22 = _mm_cvtps_pd(_mm_movehl_ps(l4, l4));
+      const __m128d b0 = _mm_cvtps_pd(l6), b1 = _mm_cvtps_pd(_mm_movehl_ps(l6, l6));
+      const __m128d b2 = _mm_cvtps_pd(h6), c = _mm_cvtps_pd(_mm_movehl_ps(h6, h6));
+      const __m128d x = _mm_set_pd(oq.x(), op.x()), y = _mm_set_pd(oq.y(), op.y()), z = _mm_set_pd(oq.z(), op.z());
+      r.x = x;
+      r.y = y;
+      r.z = z;
+      // As absolute(): b = b' − Ao, c = c' − 2b'ᵀo + oᵀAo.
+      const __m128d ao0 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(r.a00, x), _mm_mul_pd(r.a01, y)), _mm_mul_pd(r.a02, z));
+      const __m128d ao1 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(r.a01, x), _mm_mul_pd(r.a11, y)), _mm_mul_pd(r.a12, z));
+      const __m128d ao2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(r.a02, x), _mm_mul_pd(r.a12, y)), _mm_mul_pd(r.a22, z));
+      const __m128d two = _mm_set1_pd(2.0);
+      __m128d cs = _mm_add_pd(c, _mm_mul_pd(x, _mm_sub_pd(ao0, _mm_mul_pd(two, b0))));
+      cs = _mm_add_pd(cs, _mm_mul_pd(y, _mm_sub_pd(ao1, _mm_mul_pd(two, b1))));
+      r.c = _mm_add_pd(cs, _mm_mul_pd(z, _mm_sub_pd(ao2, _mm_mul_pd(two, b2))));
+      r.b0 = _mm_sub_pd(b0, ao0);
+      r.b1 = _mm_sub_pd(b1, ao1);
+      r.b2 = _mm_sub_pd(b2, ao2);
+      return r;
+    }
+  };
+#endif
 };
 
 /// Where a collapse puts the surviving vertex and what it costs there.

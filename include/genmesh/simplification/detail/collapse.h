@@ -310,16 +310,27 @@ class Collapser {
     if constexpr (relative) return data_[i].absolute(pos_[i]);
     else return data_[i];
   }
+  // Stored plane quadrics merged by +: two vertices' are made absolute side
+  // by side (Relative_quadric::absolute_sum, add_to_two).
+  static constexpr bool summed = relative && !requires(const Policy& p, const Data& d) { p.merge(d, d); };
+  // The merged data of vertices a and b.
+  [[gnu::always_inline]] Data data_sum(std::size_t a, std::size_t b) const {
+    if constexpr (summed) return Relative_quadric::absolute_sum(data_[a], pos_[a], data_[b], pos_[b]);
+    else return simplification::merge(policy_, vertex_data(a), vertex_data(b));
+  }
+  // add_data(a, d) then add_data(b, d).
+  void add_data_to_two(std::size_t a, std::size_t b, const Data& d) {
+    if constexpr (summed) {
+      if (a != b) return Relative_quadric::add_to_two(data_[a], pos_[a], data_[b], pos_[b], d);
+    }
+    add_data(a, d);
+    add_data(b, d);
+  }
   void set_data(std::size_t i, const Data& d) {
     if constexpr (relative) data_[i] = Relative_quadric::of(d, pos_[i]);
     else data_[i] = d;
   }
   void add_data(std::size_t i, const Data& d) { set_data(i, simplification::merge(policy_, vertex_data(i), d)); }
-  // The merged data of p and q (nothing for a memoryless policy).
-  Data merged_data_of([[maybe_unused]] std::size_t p, [[maybe_unused]] std::size_t q) const {
-    if constexpr (memoryless) return Data{};
-    else return simplification::merge(policy_, vertex_data(p), vertex_data(q));
-  }
 
   // The box of the vertices' points (empty without vertices).
   Eigen::AlignedBox3d points_box() const {
@@ -402,8 +413,7 @@ class Collapser {
           q = policy_.face(a, pos_[a], b, pos_[b], c, pos_[c]); // a policy that reads attributes
         else
           q = policy_.face(pos_[a], pos_[b], pos_[c]);
-        add_data(a, q);
-        add_data(b, q);
+        add_data_to_two(a, b, q);
         add_data(c, q);
       }
     }
@@ -418,8 +428,7 @@ class Collapser {
         locked_[a] = locked_[b] = 1;
       } else if constexpr (!memoryless) if (o_.border == Border_mode::preserve) {
         const Data q = policy_.border(pos_[a], pos_[b], pos_[c], o_.border_weight);
-        add_data(a, q);
-        add_data(b, q);
+        add_data_to_two(a, b, q);
       }
     }
     init_features(eb);
@@ -716,7 +725,7 @@ class Collapser {
   // The placement of collapsing h's edge; false when it may not collapse at
   // all (see where(); a memoryless policy may refuse too). Independent of
   // h's direction: the ends are taken in index order.
-  bool evaluate(H h, Placement& pl) {
+  bool evaluate(H h, Placement& pl, [[maybe_unused]] Data* sum = nullptr) {
     std::size_t a = vi(source(h, g_)), b = vi(target(h, g_));
     if (a > b) std::swap(a, b);
     const Where w = where(ei(edge(h, g_)), a, b);
@@ -728,7 +737,8 @@ class Collapser {
            : w == Where::on_segment ? best_of_three(at, a, b) : policy_.place(p);
       return std::isfinite(pl.cost); // an infinite cost: the policy refuses for now
     } else {
-      const Data s = simplification::merge(policy_, vertex_data(a), vertex_data(b));
+      const Data s = data_sum(a, b);
+      if (sum) *sum = s;
       auto at = [&](const Eigen::Vector3d& x) { return simplification::fixed(policy_, s, pos_[a], pos_[b], x); };
       pl = w == Where::at_a ? at(pos_[a]) : w == Where::at_b ? at(pos_[b])
            : w == Where::on_segment ? best_of_three(at, a, b) : policy_.place(s, pos_[a], pos_[b]);
@@ -1711,7 +1721,11 @@ class Collapser {
     const E e0 = edge_of(k);
     H h = halfedge(e0, g_);
     Placement pl;
-    if (!evaluate(h, pl)) return false; // never queued so
+    // The survivor's data: the ends' data merged, as evaluate merges them
+    // (merge is commutative bit for bit), before the collapse removes p and
+    // moves q (a stored quadric is relative to its vertex's point).
+    [[maybe_unused]] Data merged_data{};
+    if (!evaluate(h, pl, &merged_data)) return false; // never queued so
     last_cost_ = pl.cost;
     if (std::sqrt(pl.cost) > max_error_) {
       over_error_ = true;
@@ -1789,10 +1803,6 @@ class Collapser {
       grid_was_[0] = grid_.units(pos_[ip]);
       grid_was_[1] = grid_.units(pos_[iq]);
     }
-    // The survivor's data before the collapse: it reads both ends' points
-    // (a stored quadric is relative to its vertex's point), which the
-    // collapse removes (p) and moves (q).
-    [[maybe_unused]] const Data merged_data = merged_data_of(ip, iq);
     vis_.on_collapse_placement(h, std::as_const(pl.position), pl.cost, std::as_const(g_));
     Point_writer writer{{}, this, pl.position};
     // allowed() has tested can_collapse_edge: not again.
