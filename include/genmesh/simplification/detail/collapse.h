@@ -739,9 +739,12 @@ class Collapser {
     } else {
       const Data s = data_sum(a, b);
       if (sum) *sum = s;
+      if (w == Where::anywhere) {
+        pl = policy_.place(s, pos_[a], pos_[b]);
+        return true;
+      }
       auto at = [&](const Eigen::Vector3d& x) { return simplification::fixed(policy_, s, pos_[a], pos_[b], x); };
-      pl = w == Where::at_a ? at(pos_[a]) : w == Where::at_b ? at(pos_[b])
-           : w == Where::on_segment ? best_of_three(at, a, b) : policy_.place(s, pos_[a], pos_[b]);
+      pl = w == Where::at_a ? at(pos_[a]) : w == Where::at_b ? at(pos_[b]) : best_of_three(at, a, b);
       return true;
     }
   }
