@@ -1314,6 +1314,9 @@ TEST(FaceGrid, BoxCornersEqualPointwise) {
       ASSERT_EQ(lo, grid.quantize(b.lo)) << b.lo.transpose();
       ASSERT_EQ(hi, grid.quantize(b.hi)) << b.hi.transpose();
       ASSERT_EQ(grid.units(b.lo), lo) << b.lo.transpose();
+      std::uint32_t sides = 0;
+      ASSERT_EQ(grid.units(b.hi, lo, sides), hi) << b.hi.transpose();
+      ASSERT_EQ(sides, ds::Face_grid::sides(lo, hi)) << b.lo.transpose() << " / " << b.hi.transpose();
     }
   }
 }
