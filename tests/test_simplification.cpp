@@ -1347,6 +1347,12 @@ TEST(FaceGrid, BoxCornersEqualPointwise) {
       ASSERT_EQ(lo, grid.quantize(b.lo)) << b.lo.transpose();
       ASSERT_EQ(hi, grid.quantize(b.hi)) << b.hi.transpose();
       ASSERT_EQ(grid.units(b.lo), lo) << b.lo.transpose();
+      std::uint32_t sides = 0;
+      ASSERT_EQ(grid.units(b.hi, lo, sides), hi) << b.hi.transpose();
+      std::uint32_t expected = 0; // bit i: lo below hi on axis i, bit 4 + i: above
+      for (int i = 0; i < 3; ++i) expected |= std::uint32_t{lo[i] < hi[i]} << i | std::uint32_t{lo[i] > hi[i]} << (4 + i);
+      ASSERT_EQ(sides, expected) << b.lo.transpose() << " / " << b.hi.transpose();
+      ASSERT_EQ(ds::Face_grid::sides(lo, hi), expected);
     }
   }
 }
