@@ -1369,7 +1369,8 @@ class Collapser {
         if (fy != boost::graph_traits<G>::null_face()) {
           star_.push_back(static_cast<std::uint32_t>(fi(fy)));
           const std::uint32_t iw = static_cast<std::uint32_t>(vi(target(next(y, g_), g_)));
-          if (is != ip && is != iq && iw != ip && iw != iq) fresh_.push_back({{pos_[is], x, pos_[iw]}, {is, iq, iw}});
+          // (One branch, not four: the faces at p or q come at the walk's ends.)
+          if ((is != ip) & (is != iq) & (iw != ip) & (iw != iq)) fresh_.push_back({{pos_[is], x, pos_[iw]}, {is, iq, iw}});
         } else {
           border_star = true;
         }
