@@ -1606,10 +1606,15 @@ class Collapser {
                                 const Mesh_triangle<std::uint32_t>& u) {
     int side = 0;
     for (int c = 0; c < 3; ++c) {
-      if (u.id[c] == t.id[0] || u.id[c] == t.id[1] || u.id[c] == t.id[2]) continue;
+      // (`|` and a difference of comparisons, not `||` and `?:` as until
+      // session 16: branches that go either way. Shark → 10 %, guarded,
+      // Surface_mesh: 36k of 1.04M mispredicted branches fewer (callgrind
+      // --branch-sim), 0.9 % more instructions, 3 % faster (pair ratio
+      // 0.970, 15 rounds); either change alone no faster in the model.)
+      if ((u.id[c] == t.id[0]) | (u.id[c] == t.id[1]) | (u.id[c] == t.id[2])) continue;
       const Eigen::Vector3d d = u.p[c] - t.p[0];
       const double s = n.dot(d), bound = scale * d.cwiseAbs().maxCoeff();
-      const int sc = s > bound ? 1 : s < -bound ? -1 : 0;
+      const int sc = static_cast<int>(s > bound) - static_cast<int>(s < -bound);
       if (sc == 0 || (side != 0 && sc != side)) return false;
       side = sc;
     }
