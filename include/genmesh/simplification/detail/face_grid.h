@@ -330,10 +330,23 @@ class Face_grid {
       if (list.size() > c->clean + c->clean / 8) drop_stale(*c);
       // The entries whose bins meet the query's, then the versions of
       // those, reads that the processor overlaps.
-      if (hits_.size() < list.size()) hits_.resize(list.size());
+      if (hits_.size() < list.size()) {
+        hits_.resize(list.size());
+        found_.resize(list.size());
+      }
       const std::size_t n = grid_select(list.data(), list.size(), probe, hits_.data());
-      for (std::size_t i = 0; i < n; ++i)
-        if (current(hits_[i])) out.push_back(hits_[i].face);
+      // The current ones (not stale, not hidden), without a branch on the
+      // test, which goes either way: half the hits are stale or hidden
+      // (until session 16 pushed one by one after a branch; shark → 10 %,
+      // guarded, Surface_mesh: 48k of the run's 1.13M mispredicted branches
+      // fewer (callgrind --branch-sim), 0.3 % fewer instructions).
+      std::uint32_t* const found = found_.data();
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        found[k] = hits_[i].face;
+        k += current(hits_[i]);
+      }
+      out.insert(out.end(), found, found + k);
     });
   }
 
@@ -520,6 +533,7 @@ class Face_grid {
   std::size_t used_ = 0;
   std::vector<std::uint8_t> version_; // per face, 5 bits
   std::vector<Entry> hits_;           // query()'s
+  std::vector<std::uint32_t> found_;  // query()'s: the current hits' faces
   bool read_ahead_ = true;
   // No entry is stale: since reset() no face was listed twice nor removed
   // (a build), so a full list grows without reading its entries for stale
