@@ -40,6 +40,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 #if defined(__SSE2__)
@@ -306,6 +307,21 @@ struct Relative_quadric {
   };
 #endif
 };
+
+// Relative_quadric::absolute_sum and add_to_two load and store the terms two
+// or four at a time: each struct's terms must lie in this order, unpadded.
+static_assert(offsetof(Quadric, a01) == offsetof(Quadric, a00) + sizeof(double) &&
+              offsetof(Quadric, a02) == offsetof(Quadric, a00) + 2 * sizeof(double) &&
+              offsetof(Quadric, a11) == offsetof(Quadric, a00) + 3 * sizeof(double) &&
+              offsetof(Quadric, a12) == offsetof(Quadric, a00) + 4 * sizeof(double) &&
+              offsetof(Quadric, a22) == offsetof(Quadric, a00) + 5 * sizeof(double) &&
+              offsetof(Quadric, b0) == offsetof(Quadric, a00) + 6 * sizeof(double) &&
+              offsetof(Quadric, b1) == offsetof(Quadric, a00) + 7 * sizeof(double) &&
+              offsetof(Quadric, b2) == offsetof(Quadric, a00) + 8 * sizeof(double) &&
+              offsetof(Quadric, c) == offsetof(Quadric, a00) + 9 * sizeof(double));
+static_assert(offsetof(Relative_quadric, a00) == 0 && offsetof(Relative_quadric, a12) == 4 * sizeof(float) &&
+              offsetof(Relative_quadric, b0) == 6 * sizeof(float) &&
+              offsetof(Relative_quadric, c) == 9 * sizeof(float) && sizeof(Relative_quadric) == 10 * sizeof(float));
 
 /// Where a collapse puts the surviving vertex and what it costs there.
 struct Placement {

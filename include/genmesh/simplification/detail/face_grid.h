@@ -176,10 +176,7 @@ class Face_grid {
   // simplify's update_grid asks of every corner around a survivor).
   Point units(const Eigen::Vector3d& p) const {
 #if defined(__SSE2__)
-    alignas(16) std::uint32_t u[4];
-    _mm_store_si128(reinterpret_cast<__m128i*>(u),
-                    _mm_unpacklo_epi64(units(_mm_loadu_pd(p.data())), units(_mm_set1_pd(p.z()))));
-    return {u[0], u[1], u[2]};
+    return point_of(units_of(p));
 #else
     return quantize(p);
 #endif
@@ -199,11 +196,9 @@ class Face_grid {
   // instructions; the compares packed where SSE2 is there).
   Point units(const Eigen::Vector3d& p, const Point& a, std::uint32_t& s) const {
 #if defined(__SSE2__)
-    const __m128i u = _mm_unpacklo_epi64(units(_mm_loadu_pd(p.data())), units(_mm_set1_pd(p.z())));
+    const __m128i u = units_of(p);
     s = sides(lanes(a), u);
-    alignas(16) std::uint32_t w[4];
-    _mm_store_si128(reinterpret_cast<__m128i*>(w), u);
-    return {w[0], w[1], w[2]};
+    return point_of(u);
 #else
     const Point u = quantize(p);
     s = sides(a, u);
@@ -458,6 +453,15 @@ class Face_grid {
   static std::uint32_t sides(__m128i a, __m128i b) {
     const __m128i below = _mm_cmplt_epi32(a, b), above = _mm_cmpgt_epi32(a, b);
     return static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_packs_epi16(_mm_packs_epi32(below, above), _mm_setzero_si128()))) & 0x77u;
+  }
+  // p in grid units in four lanes as lanes() gives them (z twice), and back.
+  __m128i units_of(const Eigen::Vector3d& p) const {
+    return _mm_unpacklo_epi64(units(_mm_loadu_pd(p.data())), units(_mm_set1_pd(p.z())));
+  }
+  static Point point_of(__m128i u) {
+    alignas(16) std::uint32_t w[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(w), u);
+    return {w[0], w[1], w[2]};
   }
   // unit() of the two lanes of x, in the low two 32-bit lanes.
   __m128i units(__m128d x) const {
