@@ -593,16 +593,23 @@ TYPED_TEST(Simplification, TwistedWasherStaysApart) {
 
 // A bumpy annulus (the 32 × 32 grid with a hole, z = 0.05 sin 7x cos 5y):
 // curved everywhere, so that no star is flat, with two border loops. The
-// collapses next to either loop have link vertices on the border, which the
-// ring certificate decides with their border edges in the boundary of its
-// faces — each such certificate checked by the exact test (see the top): it
-// must decide some, and the results must be embedded (as the washer's).
+// collapses next to either loop have link vertices on the border, or p or
+// q, which the ring certificate decides with their border edges in the
+// boundary of its faces (with p or q there, by showing that boundary a
+// simple polygon; also some off the border, where not every edge of it is
+// seen from the new point) — each such certificate checked by the exact
+// test (see the top): it must decide some of each kind, and the results
+// must be embedded (as the washer's).
 TYPED_TEST(Simplification, RingCertificateAtTheBorder) {
+  namespace gs = genmesh::detail::simplification;
   Polygon_soup soup = genmesh::make_grid_with_hole(32);
   for (auto& p : soup.points) p.z() = 0.05 * std::sin(7 * p.x()) * std::cos(5 * p.y());
-  const std::size_t before = genmesh::detail::simplification::verified_border_certificates;
+  const std::size_t before = gs::verified_border_certificates, stars = gs::verified_border_star_certificates,
+                    outlines = gs::verified_outline_certificates;
   expect_guarded_runs_embedded<TypeParam>(soup, 0.05);
-  EXPECT_GT(genmesh::detail::simplification::verified_border_certificates, before);
+  EXPECT_GT(gs::verified_border_certificates, before);
+  EXPECT_GT(gs::verified_border_star_certificates, stars);
+  EXPECT_GT(gs::verified_outline_certificates, outlines);
 }
 
 // A flat annulus (the 32 × 32 grid with a hole, dyadic coordinates), in
@@ -1205,6 +1212,48 @@ TEST(SimplificationGuard, SureOrientationNeverWrong) {
     }
   EXPECT_EQ(wrong, 0u) << "of " << n;
   EXPECT_GT(sure, n / 10);
+}
+
+// The ring certificate's simple-polygon test on hand-made polygons, each
+// also reversed and from every starting corner (the answer depends on
+// neither): simple ones (a square, an L, corners straight between their
+// neighbours, a corner an ulp off an edge's line and off its end), and every
+// way of not being simple the certificate must catch: crossing edges, a
+// corner on a non-adjacent edge, an edge folding back onto its neighbour
+// (also upright), two loops through one point, two corners at one point
+// (adjacent or not), three corners on a line, overlapping collinear edges,
+// a corner an ulp across an edge, fewer than three corners.
+TEST(SimplificationGuard, SimplePolygonTest) {
+  using genmesh::detail::simplification::is_simple_polygon;
+  using P = std::array<double, 2>;
+  auto check = [](std::vector<P> q, bool simple, const char* what) {
+    for (int dir = 0; dir < 2; ++dir) {
+      for (std::size_t s = 0; s < q.size(); ++s) {
+        std::vector<P> r(q.begin() + static_cast<std::ptrdiff_t>(s), q.end());
+        r.insert(r.end(), q.begin(), q.begin() + static_cast<std::ptrdiff_t>(s));
+        EXPECT_EQ(is_simple_polygon(r), simple) << what << ", from corner " << s << (dir ? ", reversed" : "");
+      }
+      std::reverse(q.begin(), q.end());
+    }
+  };
+  const double above = std::nextafter(1.0, 2.0), below = std::nextafter(1.0, 0.0);
+  check({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, true, "square");
+  check({{2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}}, true, "L");
+  check({{0, 0}, {1, 0}, {2, 0}, {2, 1}, {0, 1}}, true, "a corner straight between its neighbours");
+  check({{0, 0}, {1, 0}, {3, 0}, {1, 1}}, true, "two corners straight between their neighbours");
+  check({{0, 0}, {3, 1}, {6, 2}, {6, 6}, {3, above}, {0, 6}}, true, "a corner an ulp above a corner and an edge");
+  check({{0, 0}, {1, 0}, {0, 1}, {1, 1}}, false, "bow tie");
+  check({{0, 0}, {4, 0}, {4, 4}, {2, 4}, {1, 0}, {0, 4}}, false, "a corner on a non-adjacent edge");
+  check({{0, 0}, {3, 1}, {6, 2}, {6, 6}, {3, below}, {0, 6}}, false, "a corner an ulp across an edge");
+  check({{0, 0}, {2, 0}, {1, 0}, {1, 1}}, false, "an edge folding back");
+  check({{0, 0}, {2, 0}, {2, 1}, {2, -1}, {3, 3}}, false, "an edge folding back, upright");
+  check({{0, 0}, {1, 1}, {2, 0}, {2, 2}, {1, 1}, {0, 2}}, false, "two loops through one point");
+  check({{0, 0}, {1, 0}, {1, 0}, {1, 1}}, false, "adjacent corners at one point");
+  check({{0, 0}, {1, 0}, {1, 1}, {0, 0}}, false, "the first corner again last");
+  check({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}, {-1, 0}, {-1, -1}}, false, "non-adjacent corners at one point");
+  check({{0, 0}, {1, 1}, {2, 2}}, false, "three corners on a line");
+  check({{0, 0}, {3, 0}, {3, 1}, {2, 0}, {1, 0}, {0, 1}}, false, "non-adjacent edges overlapping on a line");
+  check({{0, 0}, {1, 0}}, false, "two corners");
 }
 
 // Symmetric Hausdorff distance to the input at the same face count, at 10%

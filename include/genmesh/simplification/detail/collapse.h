@@ -70,8 +70,11 @@ namespace genmesh::detail::simplification {
 
 #ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
 // For the tests: the ring certificates verified with a link vertex on the
-// border (see Collapser::verify_certificate).
+// border, with p or q on the border, and with neither where ∂U was shown a
+// simple polygon (see Collapser::verify_certificate).
 inline std::size_t verified_border_certificates = 0;
+inline std::size_t verified_border_star_certificates = 0;
+inline std::size_t verified_outline_certificates = 0;
 #endif
 
 /// What simplify() needs of a mesh: lists, index maps, points and the
@@ -139,6 +142,52 @@ inline constexpr int unsure = 2;
       !exact_difference(c[0], a[0], cx) || !exact_product(bx, cy, l) || !exact_product(by, cx, r))
     return unsure;
   return l > r ? 1 : l < r ? -1 : 0;
+}
+
+// Is the closed polygon q[0] → q[1] → … → q[n-1] → q[0] simple: n >= 3, no
+// edge of zero length, two adjacent edges meeting only in their common
+// corner (not folded back along one line), two others not at all? Exact
+// (orient2d). Two corners at one point fail: their edges are adjacent (one
+// is zero) or, n >= 4, two non-adjacent edges hold them both; n = 3, the
+// three are on one line and an edge folds back. (The ring certificate's
+// second way: see Collapser::ring_projects_one_to_one.)
+inline bool is_simple_polygon(std::span<const std::array<double, 2>> q) {
+  const std::size_t n = q.size();
+  if (n < 3) return false;
+  auto orient = [](const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c) {
+    return detail::pred::orient2d(a[0], a[1], b[0], b[1], c[0], c[1]);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto &a = q[i == 0 ? n - 1 : i - 1], &b = q[i], &c = q[i + 1 == n ? 0 : i + 1];
+    if (a == b) return false;
+    // a, b, c on one line (a ≠ b, c ≠ b: the next corner checks that): c
+    // differs from b along a coordinate along which a does, and lies on a's
+    // side of b there iff ab and bc overlap.
+    if (orient(a, b, c) == 0) {
+      const int k = a[0] != b[0] ? 0 : 1;
+      if ((a[k] < b[k]) == (c[k] < b[k])) return false;
+    }
+  }
+  for (std::size_t i = 0; i + 2 < n; ++i) {
+    const auto &a = q[i], &b = q[i + 1];
+    const double x0 = std::min(a[0], b[0]), x1 = std::max(a[0], b[0]), y0 = std::min(a[1], b[1]),
+                 y1 = std::max(a[1], b[1]);
+    for (std::size_t j = i + 2; j < (i == 0 ? n - 1 : n); ++j) {
+      const auto &c = q[j], &d = q[j + 1 == n ? 0 : j + 1];
+      if (std::max(c[0], d[0]) < x0 || std::min(c[0], d[0]) > x1 || std::max(c[1], d[1]) < y0 ||
+          std::min(c[1], d[1]) > y1)
+        continue;
+      const int o1 = orient(a, b, c), o2 = orient(a, b, d);
+      if (o1 == o2 && o1 != 0) continue; // c and d strictly on one side of ab's line
+      // All four on one line, their boxes meeting: the segments overlap (a
+      // coordinate along which the line is one-to-one orders them).
+      if (o1 == 0 && o2 == 0) return false;
+      const int o3 = orient(c, d, a), o4 = orient(c, d, b);
+      if (o3 == o4 && o3 != 0) continue;
+      return false; // each line separates (or touches) the other segment's ends
+    }
+  }
+  return true;
 }
 
 template <class G, class Policy, class Visitor>
@@ -1234,51 +1283,65 @@ class Collapser {
   // as the mesh will be after the collapse. Does the projection along one
   // axis take U one-to-one into the plane, so that no two faces of U meet
   // beyond what they share? Then only the faces with no corner in ring_
-  // need testing; they are left in near_. The caller has checked that p and
-  // q are off the border (link vertices may be on it: their border edges are
-  // in ∂U, below; the shark's holes put an eighth of the searches there, each
-  // twice a certified one's cost before session 12). U's faces other than the new ones are
+  // need testing; they are left in near_. p, q and link vertices may be on
+  // the border (`border_star`: p or q; their border edges are in ∂U, below).
+  // U's faces other than the new ones are
   // all in near_: each holds a link vertex, a corner of a new face, so its
   // box meets the new faces' union, which the grid query never misses.
-  // Checked: (1) every face of U has a strictly positive orientation in the
-  // projection (orient2d, exact) along an axis (its two others swapped where
-  // the new faces' normal sum is negative along it; the axes are tried in
-  // turn, see below);
-  // (2) every edge of ∂U, the 1-chain boundary of U, has a strictly
-  // positive orientation seen from x, and (3) ∂U crosses the ray from x
-  // along the first projected axis exactly once (upwards; a positive edge
-  // can cross it no other way).
+  // Checked, along an axis (its two others swapped where the new faces'
+  // normal sum is negative along it; the axes are tried in turn, see below):
+  // (1) every face of U has a strictly positive orientation in the
+  // projection (orient2d, exact); and (S) ∂U, the 1-chain boundary of U,
+  // projects onto a simple closed curve, shown one of two ways:
+  // (A) (p and q off the border) every edge of ∂U has a strictly positive
+  // orientation seen from x, and ∂U crosses the ray from x along the first
+  // projected axis exactly once (upwards; a positive edge can cross it no
+  // other way). ∂U is a sum of closed loops; along each, by the first, the
+  // angle around x grows strictly, so each winds at least once around x; by
+  // the second, the sum winds once: ∂U is one loop, and meets every ray
+  // from x once — a simple closed curve. Cheap (one pass), but it cannot
+  // hold where x is on ∂U, and fails where the outline turns away from x.
+  // (B) where (A) does not hold: ∂U's edges form one cycle that passes
+  // each vertex once (each the source of one edge and the target of one),
+  // and its projection is a simple polygon (is_simple_polygon, exact: no
+  // zero edge, adjacent edges meeting only in their corner, no others
+  // meeting) — a simple closed curve.
   // Why that suffices: by (1), for a point y on no projected edge, the
   // number of faces of U whose projection holds y is the winding number of
   // ∂U's projection around y (each positive triangle adds one where it
-  // covers y; their boundaries sum to ∂U). ∂U is a sum of closed loops;
-  // along each, by (2), the angle around x grows strictly, so each winds at
-  // least once around x; by (3), the sum winds once: ∂U is one loop, and
-  // meets every ray from x once — a simple closed curve, whose winding
-  // number is 0 or 1 everywhere. So the projected faces of U have disjoint
+  // covers y; their boundaries sum to ∂U): at least 0, and by (S) 0 or ±1
+  // (Jordan) — so 0 or 1. So the projected faces of U have disjoint
   // interiors. Then an edge e of U with a corner in the link or x has its
-  // faces in U (they hold that corner): two, on either side of it, which
-  // cover a small disc around a point inside e; or, a border edge, one, on
-  // the side where the winding number is 1 — e is in ∂U, across which it
-  // drops to 0: nothing of U lies on the other side near e. Either way any
-  // other face through a point inside e would overlap them. Likewise the
-  // star of x (all in U) covers a disc around x exactly once, and that of a
-  // link vertex w a disc or, on the border, the wedge between w's two
-  // border edges (both in ∂U, which passes w once; the winding number is 0
-  // outside the wedge near w): a face of U through w's point holds w. A
+  // faces in U (they hold that corner): two, on either side of it (both
+  // positive, they run it in opposite directions), which cover a small disc
+  // around a point inside e; or, a border edge, one, on the side where the
+  // winding number is 1 — e is in ∂U, across which it drops to 0: nothing
+  // of U lies on the other side near e. Either way any other face through
+  // a point inside e would overlap them. Likewise the star of v, x or a
+  // link vertex (all in U): its faces, positive, turn around v's point one
+  // way; off the border by a whole number of turns, each direction near v
+  // covered that often, at least once — once, by the winding number; on
+  // the border from one of v's two border edges to the other (both in ∂U,
+  // which passes v once, so near v the winding number is 1 on one side of
+  // them and 0 on the other), covering the wedge between them once and
+  // nothing outside it. Either way a face of U through v's point holds v (it
+  // would cover a point near v twice, or where the winding number is 0). A
   // new face t has only such corners and edges, so the projection of any
   // other face u of U meets t's only on edges and corners they share; a
   // common point P of t and u projects onto one, Q, of a shared edge or
   // corner, which lies in t; t projects one-to-one (1), so P = Q: t and u
   // meet in what they share. Which edges form ∂U: an edge with a corner w
   // in the link or x has its faces in U (they hold w), so it cancels unless
-  // it is a border edge (at x never: p and q are off the border), which is
-  // in ∂U as its face runs it (add_border_edges); an edge ab with no such corner lies in a face (a, b, w) of U
+  // it is a border edge, which is in ∂U as its face runs it — at a link
+  // vertex on the border (add_border_edges, an edge to p read as one to q:
+  // the collapse makes p's edges x's, with the faces' directions), and at
+  // x, which ends at such a vertex (x's neighbours are the link); an edge
+  // ab with no such corner lies in a face (a, b, w) of U
   // with w in the link (a new face has its corners there), and cancels iff
   // its twin (b, a, z) has z in the link — then both appear: the boundary
   // edges are the edges b → a of the faces with one corner w in the link
   // and its two others not (nor p, q), minus the pairs that come both ways.
-  bool ring_projects_one_to_one(const Eigen::Vector3d& x) {
+  bool ring_projects_one_to_one(const Eigen::Vector3d& x, bool border_star) {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (const Fresh_plane& pl : fresh_plane_) sum += pl.n;
     const Eigen::Vector3d m = sum.cwiseAbs();
@@ -1286,22 +1349,25 @@ class Collapser {
     // Marks: the link; cleared before returning. (near_corners_ holds no
     // face around p or q.)
     for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] |= link;
-    // Any axis along which (1)-(3) hold will do; the largest component of
+    outline_state_ = outline_unknown;
+    // Any axis along which (1) and (S) hold will do; the largest component of
     // the normal sum first, then the other two (on the shark, 100 of the
     // 258 searches a run that the first fails, most with an edge of ∂U not
     // positive seen from x).
     bool ok = false;
     for (int i = 0; i < 3 && !ok; ++i) {
       const int axis = (first + i) % 3;
-      if (m[axis] != 0) ok = projects_one_to_one_along(x, axis, sum[axis] < 0);
+      if (m[axis] != 0) ok = projects_one_to_one_along(x, axis, sum[axis] < 0, border_star);
     }
     for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] &= static_cast<std::uint8_t>(~link);
     return ok;
   }
 
-  // Checks (1)-(3) of ring_projects_one_to_one along `axis`, the projection's
-  // two coordinates swapped if `swap` (the link marked).
-  bool projects_one_to_one_along(const Eigen::Vector3d& x, int axis, bool swap) {
+  // Checks (1) and (S) of ring_projects_one_to_one along `axis`, the
+  // projection's two coordinates swapped if `swap` (the link marked): (S)
+  // by (A) where p and q are off the border, else or where (A) finds an
+  // edge of ∂U not seen from x, by (B).
+  bool projects_one_to_one_along(const Eigen::Vector3d& x, int axis, bool swap, bool border_star) {
     // The projection as the two coordinates it keeps (project2's, in its
     // order unless swapped); `at` projects a vertex by index (until session
     // 15 a point, through project2's switch and the swap at every call;
@@ -1317,18 +1383,71 @@ class Collapser {
       if (!positive(at(t.id[0]), px, at(t.id[2]))) return false;
     if (!classify_near(at)) return false;
     add_border_edges();
-    int crossings = 0;
-    for (const std::uint64_t e : ring_edges_) {
-      const auto a = at(e >> 32), b = at(e & 0xffffffffu);
-      if (!positive(px, a, b)) return false;
-      crossings += a[1] < px[1] && px[1] <= b[1];
+    if (!border_star) {
+      int crossings = 0;
+      bool seen = true;
+      for (const std::uint64_t e : ring_edges_) {
+        const auto a = at(e >> 32), b = at(e & 0xffffffffu);
+        if (!positive(px, a, b)) {
+          seen = false;
+          break;
+        }
+        crossings += a[1] < px[1] && px[1] <= b[1];
+      }
+      if (seen) {
+        // (Another number of crossings: ∂U winds around x that often, so
+        // it is no simple curve, and (B) would fail too.)
+        by_outline_ = false;
+        return crossings == 1;
+      }
     }
-    return crossings == 1;
+    const bool ok = outline_is_simple(at);
+    by_outline_ = ok;
+    return ok;
+  }
+
+  // ∂U (ring_edges_) projected by `at` is a simple closed polygon: its
+  // edges form one cycle through distinct vertices (outline_, found once
+  // a search: the edges are the same along every axis), which
+  // is_simple_polygon accepts.
+  template <class At>
+  bool outline_is_simple(const At& at) {
+    if (outline_state_ == outline_unknown) outline_state_ = outline_cycle_of_ring_edges() ? outline_cycle : outline_none;
+    if (outline_state_ != outline_cycle) return false;
+    outline_pts_.resize(outline_.size());
+    for (std::size_t i = 0; i < outline_.size(); ++i) outline_pts_[i] = at(outline_[i]);
+    return is_simple_polygon(outline_pts_);
+  }
+
+  // Do ring_edges_ form one cycle, each vertex the source of one edge and
+  // the target of one? Then outline_ holds the sources in the cycle's order.
+  bool outline_cycle_of_ring_edges() {
+    outline_.clear();
+    const std::size_t n = ring_edges_.size();
+    if (n < 3) return false;
+    sorted_edges_.assign(ring_edges_.begin(), ring_edges_.end());
+    std::sort(sorted_edges_.begin(), sorted_edges_.end());
+    for (std::size_t i = 1; i < n; ++i)
+      if (sorted_edges_[i] >> 32 == sorted_edges_[i - 1] >> 32) return false;
+    // Sources distinct: the walk from the first meets each edge at most
+    // once before it comes back to its start, which must take all n.
+    const std::uint64_t start = sorted_edges_[0] >> 32;
+    std::uint64_t v = start;
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto e = std::lower_bound(sorted_edges_.begin(), sorted_edges_.end(), v << 32);
+      if (e == sorted_edges_.end() || *e >> 32 != v) return false;
+      outline_.push_back(static_cast<std::uint32_t>(v));
+      v = *e & 0xffffffffu;
+      if (v == start) return k + 1 == n;
+    }
+    return false;
   }
 
   // The border edges at the link vertices on the border (border_link_: a
-  // halfedge into each) into ∂U, each as its face runs it, once.
+  // halfedge into each) into ∂U, each as its face runs it, once, as they
+  // will be after the collapse: an edge to p as one to q.
   void add_border_edges() {
+    const std::uint64_t ip = ring_[0], iq = ring_[1];
     for (const H into : border_link_) {
       const std::uint64_t w = vi(target(into, g_));
       H y = into;
@@ -1336,7 +1455,8 @@ class Collapser {
         // y: s → w.
         const bool out = border(y), in = !out && border(opposite(y, g_));
         if (out || in) {
-          const std::uint64_t s = vi(source(y, g_));
+          std::uint64_t s = vi(source(y, g_));
+          if (s == ip) s = iq;
           const std::uint64_t e = out ? w << 32 | s : s << 32 | w;
           if (std::find(ring_edges_.begin(), ring_edges_.end(), e) == ring_edges_.end()) ring_edges_.push_back(e);
         }
@@ -1349,9 +1469,14 @@ class Collapser {
   // For the tests: what ring_projects_one_to_one proved, checked by the
   // exact test — the new faces pairwise, and against every face the query
   // found but those around p or q (`found`, by their corners); counted in
-  // verified_border_certificates where a link vertex is on the border.
-  void verify_certificate(const std::vector<std::array<std::uint32_t, 3>>& found) const {
+  // verified_border_certificates where a link vertex is on the border, in
+  // verified_border_star_certificates where p or q is, in
+  // verified_outline_certificates where neither is and ∂U was shown a
+  // simple polygon (way (B)).
+  void verify_certificate(const std::vector<std::array<std::uint32_t, 3>>& found, bool border_star) const {
     if (!border_link_.empty()) ++verified_border_certificates;
+    if (border_star) ++verified_border_star_certificates;
+    if (by_outline_ && !border_star) ++verified_outline_certificates;
     for (std::size_t i = 0; i < fresh_.size(); ++i)
       for (std::size_t j = i + 1; j < fresh_.size(); ++j)
         if (faces_intersect(fresh_[i], fresh_[j]))
@@ -1511,10 +1636,10 @@ class Collapser {
     // With the ring certified, the new faces meet each other and every face
     // at a link vertex only in what they share: only the faces with no
     // corner in ring_ (p, q and the link) are left to test.
-    const bool certified = !border_star && ring_projects_one_to_one(x);
+    const bool certified = ring_projects_one_to_one(x, border_star);
     if (certified) {
 #ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
-      verify_certificate(near_corners_);
+      verify_certificate(near_corners_, border_star);
 #endif
       near_corners_.swap(foreign_);
     } else {
@@ -2005,6 +2130,12 @@ class Collapser {
   static constexpr std::uint8_t on_border = 1, link = 4;
   std::vector<std::uint8_t> vflags_;
   std::vector<std::uint64_t> ring_edges_; // ∂U (see ring_projects_one_to_one), from << 32 | to
+  std::vector<std::uint64_t> sorted_edges_;      // ring_edges_ by source (outline_cycle_of_ring_edges)
+  std::vector<std::uint32_t> outline_;           // ∂U's vertices in its cycle's order
+  std::vector<std::array<double, 2>> outline_pts_; // projected
+  static constexpr std::uint8_t outline_unknown = 0, outline_cycle = 1, outline_none = 2;
+  std::uint8_t outline_state_ = outline_unknown; // this search's outline_
+  bool by_outline_ = false; // the last certificate came from outline_is_simple
   std::vector<H> around_;           // the survivor's incoming halfedges
   Ahead ahead_[2];                  // the next edges' fans, walked ahead (see ahead_begin)
   bool prefetch_ = true; // whether walks ahead and hints pay (not on a mesh that stays in cache)
