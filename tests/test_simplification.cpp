@@ -1196,14 +1196,16 @@ TEST(SimplificationQuadric, LaneCostsEqualPlaceBitForBit) {
     double cost[2];
     const int done = policy.place_costs(s, o[0], o[1], o[2], o[3], cost);
     for (int j = 0; j < 2; ++j) {
+      // Each lane's sum is absolute_sum's (simplify hands a lane left to place() its sum).
+      const Quadric sum = Relative_quadric::absolute_sum(r[2 * j], o[2 * j], r[2 * j + 1], o[2 * j + 1]);
+      const Quadric lane = s.lane(j);
+      ASSERT_EQ(std::memcmp(&lane, &sum, sizeof(Quadric)), 0) << "case " << i << " lane " << j;
       if (!(done >> j & 1)) {
         ++left;
         continue;
       }
       ++taken;
-      const genmesh::Placement expected =
-          policy.place(Relative_quadric::absolute_sum(r[2 * j], o[2 * j], r[2 * j + 1], o[2 * j + 1]), o[2 * j],
-                       o[2 * j + 1]);
+      const genmesh::Placement expected = policy.place(sum, o[2 * j], o[2 * j + 1]);
       ASSERT_EQ(std::memcmp(&cost[j], &expected.cost, sizeof(double)), 0) << "case " << i << " lane " << j;
     }
   }

@@ -147,6 +147,14 @@ struct Quadric_lanes {
     return {_mm_set1_pd(q.a00), _mm_set1_pd(q.a01), _mm_set1_pd(q.a02), _mm_set1_pd(q.a11), _mm_set1_pd(q.a12),
             _mm_set1_pd(q.a22), _mm_set1_pd(q.b0),  _mm_set1_pd(q.b1),  _mm_set1_pd(q.b2),  _mm_set1_pd(q.c)};
   }
+  /// Lane j's quadric.
+  [[gnu::always_inline]] Quadric lane(int j) const {
+    auto at = [j](__m128d v) { return _mm_cvtsd_f64(j == 0 ? v : _mm_unpackhi_pd(v, v)); };
+    Quadric q;
+    q.a00 = at(a00), q.a01 = at(a01), q.a02 = at(a02), q.a11 = at(a11), q.a12 = at(a12), q.a22 = at(a22);
+    q.b0 = at(b0), q.b1 = at(b1), q.b2 = at(b2), q.c = at(c);
+    return q;
+  }
   /// Lane by lane, as Quadric's +.
   [[gnu::always_inline]] friend Quadric_lanes operator+(const Quadric_lanes& x, const Quadric_lanes& y) {
     return {_mm_add_pd(x.a00, y.a00), _mm_add_pd(x.a01, y.a01), _mm_add_pd(x.a02, y.a02), _mm_add_pd(x.a11, y.a11),

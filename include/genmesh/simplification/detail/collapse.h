@@ -318,32 +318,32 @@ class Collapser {
     if constexpr (summed) return Relative_quadric::absolute_sum(data_[a], pos_[a], data_[b], pos_[b]);
     else return simplification::merge(policy_, vertex_data(a), vertex_data(b));
   }
-  // Edges evaluated two at a time, side by side (Plane_quadrics' place_costs):
-  // stored plane quadrics merged by +, with SSE2.
+  // Edges evaluated two at a time, side by side (Plane_quadrics::place_costs,
+  // with SSE2): Plane_quadrics itself only, not a type derived from it (its
+  // place() may differ).
 #if defined(__SSE2__)
-  static constexpr bool two_at_once =
-      summed && requires(const Policy& p, const Quadric_lanes& l, const Eigen::Vector3d& x, double* c) {
-        { p.place_costs(l, x, x, x, x, c) } -> std::convertible_to<int>;
-      };
+  static constexpr bool two_at_once = summed && std::is_same_v<Policy, Plane_quadrics>;
 #else
   static constexpr bool two_at_once = false;
 #endif
-  // The costs of collapsing edges k0 = (a0, b0) and k1 = (a1, b1) (a_i < b_i,
-  // anywhere: no locks), as evaluate() gives them; s holds their ends' data
-  // summed, lane by lane. Where place_costs leaves a lane, evaluate() does it.
+  // Vertex i's stored quadric made absolute, out of line: collapse() calls it
+  // right after set_data(i), and GCC 12 (-O2/-O3) has forwarded the doubles
+  // just stored as floats to such reloads unrounded (docs/benchmarks.md,
+  // session 16, "Simplification quadrics").
+  [[gnu::noinline]] Quadric stored_absolute(std::size_t i) const { return data_[i].absolute(pos_[i]); }
+  // The costs of collapsing edges (a0, b0) and (a1, b1) (a_i < b_i, anywhere:
+  // no locks), as evaluate() gives them; s holds their ends' data summed,
+  // lane by lane. Where place_costs leaves a lane, place() takes that lane's
+  // sum (the same doubles as data_sum's).
   template <class Lanes>
-  [[gnu::always_inline]] void costs_two(const Lanes& s, std::size_t k0, std::size_t a0, std::size_t b0,
-                                        std::size_t k1, std::size_t a1, std::size_t b1, double* cost) {
+  [[gnu::always_inline]] void costs_two(const Lanes& s, std::size_t a0, std::size_t b0, std::size_t a1,
+                                        std::size_t b1, double* cost) const {
     const int done = policy_.place_costs(s, pos_[a0], pos_[b0], pos_[a1], pos_[b1], cost);
     if (done == 3) return;
-    Placement pl;
-    if (!(done & 1)) {
-      evaluate(halfedge(edge_of(k0), g_), pl);
-      cost[0] = pl.cost;
-    }
-    if (!(done & 2)) {
-      evaluate(halfedge(edge_of(k1), g_), pl);
-      cost[1] = pl.cost;
+    for (int j = 0; j < 2; ++j) {
+      if (done >> j & 1) continue;
+      const Quadric q = s.lane(j);
+      cost[j] = j == 0 ? policy_.place(q, pos_[a0], pos_[b0]).cost : policy_.place(q, pos_[a1], pos_[b1]).cost;
     }
   }
 
@@ -523,7 +523,7 @@ class Collapser {
           const Quadric_lanes sum = Relative_quadric::absolute_lanes(data_[ha], pos_[ha], data_[a], pos_[a]) +
                                     Relative_quadric::absolute_lanes(data_[hb], pos_[hb], data_[b], pos_[b]);
           double cost[2];
-          costs_two(sum, held, ha, hb, k, a, b, cost);
+          costs_two(sum, ha, hb, a, b, cost);
           queue_.push(held, static_cast<float>(cost[0]));
           queue_.push(k, static_cast<float>(cost[1]));
         }
@@ -1923,7 +1923,7 @@ class Collapser {
       if (!locks_) {
         // q's edges two at a time: q's data made absolute once, its
         // neighbours' two by two (+ is commutative bit for bit).
-        const Quadric_lanes at_q = Quadric_lanes::both(data_[iq].absolute(pos_[iq]));
+        const Quadric_lanes at_q = Quadric_lanes::both(stored_absolute(iq));
         std::size_t i = 0;
         for (; i + 1 < around_.size(); i += 2) {
           std::size_t k[2], n[2];
@@ -1937,8 +1937,7 @@ class Collapser {
           const Quadric_lanes sum =
               Relative_quadric::absolute_lanes(data_[n[0]], pos_[n[0]], data_[n[1]], pos_[n[1]]) + at_q;
           double cost[2];
-          costs_two(sum, k[0], std::min(iq, n[0]), std::max(iq, n[0]), k[1], std::min(iq, n[1]),
-                    std::max(iq, n[1]), cost);
+          costs_two(sum, std::min(iq, n[0]), std::max(iq, n[0]), std::min(iq, n[1]), std::max(iq, n[1]), cost);
           queue_.update(k[0], static_cast<float>(cost[0]));
           queue_.update(k[1], static_cast<float>(cost[1]));
         }
