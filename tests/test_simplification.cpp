@@ -1164,6 +1164,63 @@ TEST(SimplificationQuadric, PairsEqualTheScalarFormsBitForBit) {
   }
 }
 
+#if defined(__SSE2__)
+// simplify evaluates edges two at a time (Relative_quadric::absolute_lanes,
+// Quadric_lanes, Plane_quadrics::place_costs); each lane's cost must equal
+// place()'s bit for bit where place_costs takes it. Random sums of planes,
+// some nearly parallel (ill conditioned: the fallback, left to place()),
+// edges at several scales and lengths (some minimizers beyond the distance
+// limit).
+TEST(SimplificationQuadric, LaneCostsEqualPlaceBitForBit) {
+  using genmesh::Quadric;
+  using genmesh::Relative_quadric;
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto unit = [&](const Eigen::Vector3d& near, double spread) {
+    Eigen::Vector3d n = near + spread * Eigen::Vector3d(u(rng), u(rng), u(rng));
+    return Eigen::Vector3d(n / std::max(n.norm(), 1e-3));
+  };
+  const genmesh::Plane_quadrics policy;
+  std::size_t taken = 0, left = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double scale = std::array<double, 4>{1e-3, 1.0, 1e2, 1e5}[i % 4];
+    const double spread = std::array<double, 3>{1.0, 1e-2, 1e-5}[i % 3];
+    Relative_quadric r[4];
+    Eigen::Vector3d o[4];
+    for (int j = 0; j < 4; ++j) {
+      o[j] = scale * Eigen::Vector3d(u(rng), u(rng), u(rng));
+      const Eigen::Vector3d n0 = unit(Eigen::Vector3d::Zero(), 1.0);
+      Quadric q;
+      for (int k = 0; k < 2 + j % 3; ++k) {
+        const Eigen::Vector3d n = unit(n0, spread);
+        q += Quadric::plane(n, -n.dot(o[j]) + scale * 1e-2 * u(rng), 1.0 + k % 2);
+      }
+      r[j] = Relative_quadric::of(q, o[j]);
+    }
+    // Edges (0, 1) and (2, 3).
+    const genmesh::Quadric_lanes s =
+        Relative_quadric::absolute_lanes(r[0], o[0], r[2], o[2]) + Relative_quadric::absolute_lanes(r[1], o[1], r[3], o[3]);
+    double cost[2];
+    const int done = policy.place_costs(s, o[0], o[1], o[2], o[3], cost);
+    for (int j = 0; j < 2; ++j) {
+      // Each lane's sum is absolute_sum's (simplify hands a lane left to place() its sum).
+      const Quadric sum = Relative_quadric::absolute_sum(r[2 * j], o[2 * j], r[2 * j + 1], o[2 * j + 1]);
+      const Quadric lane = s.lane(j);
+      ASSERT_EQ(std::memcmp(&lane, &sum, sizeof(Quadric)), 0) << "case " << i << " lane " << j;
+      if (!(done >> j & 1)) {
+        ++left;
+        continue;
+      }
+      ++taken;
+      const genmesh::Placement expected = policy.place(sum, o[2 * j], o[2 * j + 1]);
+      ASSERT_EQ(std::memcmp(&cost[j], &expected.cost, sizeof(double)), 0) << "case " << i << " lane " << j;
+    }
+  }
+  EXPECT_GT(taken, 1000u);
+  EXPECT_GT(left, 1000u);
+}
+#endif
+
 // The guard's quick 2D orientation (a sign, or `unsure`) never gives a
 // wrong sign, down to the subnormals: collinear lattices nudged by an ulp
 // or not, and nearly collinear points, scaled by 2^k across the whole range,

@@ -136,6 +136,34 @@ struct Quadric {
   }
 };
 
+#if defined(__SSE2__)
+/// Two Quadrics side by side: lane 0 one's term, lane 1 the other's (simplify
+/// evaluates two edges at once: each lane does the scalar operations).
+struct Quadric_lanes {
+  __m128d a00, a01, a02, a11, a12, a22, b0, b1, b2, c;
+
+  /// q in both lanes.
+  [[gnu::always_inline]] static Quadric_lanes both(const Quadric& q) {
+    return {_mm_set1_pd(q.a00), _mm_set1_pd(q.a01), _mm_set1_pd(q.a02), _mm_set1_pd(q.a11), _mm_set1_pd(q.a12),
+            _mm_set1_pd(q.a22), _mm_set1_pd(q.b0),  _mm_set1_pd(q.b1),  _mm_set1_pd(q.b2),  _mm_set1_pd(q.c)};
+  }
+  /// Lane j's quadric.
+  [[gnu::always_inline]] Quadric lane(int j) const {
+    auto at = [j](__m128d v) { return _mm_cvtsd_f64(j == 0 ? v : _mm_unpackhi_pd(v, v)); };
+    Quadric q;
+    q.a00 = at(a00), q.a01 = at(a01), q.a02 = at(a02), q.a11 = at(a11), q.a12 = at(a12), q.a22 = at(a22);
+    q.b0 = at(b0), q.b1 = at(b1), q.b2 = at(b2), q.c = at(c);
+    return q;
+  }
+  /// Lane by lane, as Quadric's +.
+  [[gnu::always_inline]] friend Quadric_lanes operator+(const Quadric_lanes& x, const Quadric_lanes& y) {
+    return {_mm_add_pd(x.a00, y.a00), _mm_add_pd(x.a01, y.a01), _mm_add_pd(x.a02, y.a02), _mm_add_pd(x.a11, y.a11),
+            _mm_add_pd(x.a12, y.a12), _mm_add_pd(x.a22, y.a22), _mm_add_pd(x.b0, y.b0),   _mm_add_pd(x.b1, y.b1),
+            _mm_add_pd(x.b2, y.b2),   _mm_add_pd(x.c, y.c)};
+  }
+};
+#endif
+
 /// A Quadric stored in 10 floats (40 bytes instead of 80) relative to an
 /// origin o that the owner keeps anyway (simplify: the vertex's own current
 /// point): Q(x) = (x−o)ᵀA(x−o) + 2b'ᵀ(x−o) + c', so b' = b + Ao (half Q's
@@ -212,6 +240,16 @@ struct Relative_quadric {
     return p.absolute(op) + q.absolute(oq);
 #endif
   }
+
+#if defined(__SSE2__)
+  /// p.absolute(op) in lane 0 and q.absolute(oq) in lane 1, the same
+  /// operations on the same values.
+  [[gnu::always_inline]] static Quadric_lanes absolute_lanes(const Relative_quadric& p, const Eigen::Vector3d& op,
+                                                             const Relative_quadric& q, const Eigen::Vector3d& oq) {
+    const Lanes l = Lanes::absolute(p, op, q, oq);
+    return {l.a00, l.a01, l.a02, l.a11, l.a12, l.a22, l.b0, l.b1, l.b2, l.c};
+  }
+#endif
 
   /// p = of(p.absolute(op) + d, op) and q = of(q.absolute(oq) + d, oq), the
   /// same operations on the same values; with SSE2 side by side, as
@@ -445,6 +483,60 @@ struct Plane_quadrics {
     }
     return detail::simplification::best_of_ends(q, a, b);
   }
+#if defined(__SSE2__)
+  /// place(q_i, a_i, b_i).cost of two edges at once, q_i in lane i of q:
+  /// where the minimizer is taken (the same operations as place(), lane by
+  /// lane), cost[i] is set and bit i of the result; the other lanes (the
+  /// fallback of place(), a few percent of the edges) are left to place().
+  [[gnu::always_inline]] int place_costs(const Quadric_lanes& q, const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
+                                         const Eigen::Vector3d& a1, const Eigen::Vector3d& b1, double* cost) const {
+    auto mul = [](__m128d x, __m128d y) { return _mm_mul_pd(x, y); };
+    auto add = [](__m128d x, __m128d y) { return _mm_add_pd(x, y); };
+    auto sub = [](__m128d x, __m128d y) { return _mm_sub_pd(x, y); };
+    const __m128d sign = _mm_set1_pd(-0.0);
+    // Quadric::minimizer.
+    const __m128d c00 = sub(mul(q.a11, q.a22), mul(q.a12, q.a12)), c01 = sub(mul(q.a02, q.a12), mul(q.a01, q.a22)),
+                  c02 = sub(mul(q.a01, q.a12), mul(q.a02, q.a11));
+    const __m128d det = add(add(mul(q.a00, c00), mul(q.a01, c01)), mul(q.a02, c02));
+    const __m128d r0 = add(add(mul(q.a00, q.a00), mul(q.a01, q.a01)), mul(q.a02, q.a02)),
+                  r1 = add(add(mul(q.a01, q.a01), mul(q.a11, q.a11)), mul(q.a12, q.a12)),
+                  r2 = add(add(mul(q.a02, q.a02), mul(q.a12, q.a12)), mul(q.a22, q.a22));
+    __m128d ok = _mm_cmpgt_pd(_mm_andnot_pd(sign, det),
+                              mul(_mm_set1_pd(conditioning), _mm_sqrt_pd(mul(mul(r0, r1), r2))));
+    if (_mm_movemask_pd(ok) == 0) return 0;
+    const __m128d c11 = sub(mul(q.a00, q.a22), mul(q.a02, q.a02)), c12 = sub(mul(q.a01, q.a02), mul(q.a00, q.a12)),
+                  c22 = sub(mul(q.a00, q.a11), mul(q.a01, q.a01));
+    const __m128d inv = _mm_div_pd(_mm_set1_pd(1.0), det);
+    const __m128d x = mul(_mm_xor_pd(add(add(mul(c00, q.b0), mul(c01, q.b1)), mul(c02, q.b2)), sign), inv);
+    const __m128d y = mul(_mm_xor_pd(add(add(mul(c01, q.b0), mul(c11, q.b1)), mul(c12, q.b2)), sign), inv);
+    const __m128d z = mul(_mm_xor_pd(add(add(mul(c02, q.b0), mul(c12, q.b1)), mul(c22, q.b2)), sign), inv);
+    const __m128d big = _mm_set1_pd(std::numeric_limits<double>::max());
+    ok = _mm_and_pd(ok, _mm_cmple_pd(_mm_andnot_pd(sign, x), big));
+    ok = _mm_and_pd(ok, _mm_cmple_pd(_mm_andnot_pd(sign, y), big));
+    ok = _mm_and_pd(ok, _mm_cmple_pd(_mm_andnot_pd(sign, z), big));
+    // place(): the distance to the midpoint (the limit's squared length by
+    // the same Eigen expression).
+    const __m128d half = _mm_set1_pd(0.5);
+    const __m128d dx = sub(x, mul(half, add(_mm_set_pd(a1.x(), a0.x()), _mm_set_pd(b1.x(), b0.x())))),
+                  dy = sub(y, mul(half, add(_mm_set_pd(a1.y(), a0.y()), _mm_set_pd(b1.y(), b0.y())))),
+                  dz = sub(z, mul(half, add(_mm_set_pd(a1.z(), a0.z()), _mm_set_pd(b1.z(), b0.z()))));
+    const double f = max_distance_factor * max_distance_factor;
+    const __m128d limit = _mm_set_pd(f * (b1 - a1).squaredNorm(), f * (b0 - a0).squaredNorm());
+    ok = _mm_and_pd(ok, _mm_cmple_pd(add(add(mul(dx, dx), mul(dy, dy)), mul(dz, dz)), limit));
+    const int done = _mm_movemask_pd(ok);
+    if (done == 0) return 0;
+    // Quadric::operator().
+    const __m128d ax = add(add(mul(q.a00, x), mul(q.a01, y)), mul(q.a02, z));
+    const __m128d ay = add(add(mul(q.a01, x), mul(q.a11, y)), mul(q.a12, z));
+    const __m128d az = add(add(mul(q.a02, x), mul(q.a12, y)), mul(q.a22, z));
+    const __m128d two = _mm_set1_pd(2.0);
+    const __m128d v = add(add(add(mul(x, add(ax, mul(two, q.b0))), mul(y, add(ay, mul(two, q.b1)))),
+                              mul(z, add(az, mul(two, q.b2)))),
+                          q.c);
+    _mm_storeu_pd(cost, _mm_and_pd(_mm_cmpgt_pd(v, _mm_setzero_pd()), v)); // v > 0 ? v : 0
+    return done;
+  }
+#endif
 };
 
 /// Probabilistic plane quadrics (Trettner & Kobbelt 2020, isotropic

@@ -367,6 +367,35 @@ class Collapser {
     if constexpr (summed) return Relative_quadric::absolute_sum(data_[a], pos_[a], data_[b], pos_[b]);
     else return simplification::merge(policy_, vertex_data(a), vertex_data(b));
   }
+  // Edges evaluated two at a time, side by side (Plane_quadrics::place_costs,
+  // with SSE2): Plane_quadrics itself only, not a type derived from it (its
+  // place() may differ).
+#if defined(__SSE2__)
+  static constexpr bool two_at_once = summed && std::is_same_v<Policy, Plane_quadrics>;
+#else
+  static constexpr bool two_at_once = false;
+#endif
+  // Vertex i's stored quadric made absolute, out of line: collapse() calls it
+  // right after set_data(i), and GCC 12 (-O2/-O3) has forwarded the doubles
+  // just stored as floats to such reloads unrounded (docs/benchmarks.md,
+  // session 16, "Simplification quadrics").
+  [[gnu::noinline]] Quadric stored_absolute(std::size_t i) const { return data_[i].absolute(pos_[i]); }
+  // The costs of collapsing edges (a0, b0) and (a1, b1) (a_i < b_i, anywhere:
+  // no locks), as evaluate() gives them; s holds their ends' data summed,
+  // lane by lane. Where place_costs leaves a lane, place() takes that lane's
+  // sum (the same doubles as data_sum's).
+  template <class Lanes>
+  [[gnu::always_inline]] void costs_two(const Lanes& s, std::size_t a0, std::size_t b0, std::size_t a1,
+                                        std::size_t b1, double* cost) const {
+    const int done = policy_.place_costs(s, pos_[a0], pos_[b0], pos_[a1], pos_[b1], cost);
+    if (done == 3) return;
+    for (int j = 0; j < 2; ++j) {
+      if (done >> j & 1) continue;
+      const Quadric q = s.lane(j);
+      cost[j] = j == 0 ? policy_.place(q, pos_[a0], pos_[b0]).cost : policy_.place(q, pos_[a1], pos_[b1]).cost;
+    }
+  }
+
   // add_data(a, d) then add_data(b, d).
   void add_data_to_two(std::size_t a, std::size_t b, const Data& d) {
     if constexpr (summed) {
@@ -523,6 +552,34 @@ class Collapser {
       ++lead;
     };
     for (int i = 0; prefetch_ && i < lag && lead != end; ++i) ask();
+    if constexpr (two_at_once) {
+      if (!locks_) {
+        // Two edges at a time (no locks: every edge may collapse anywhere).
+        std::size_t held = 0, ha = 0, hb = 0;
+        bool holding = false;
+        for (const E e : es) {
+          if (prefetch_ && lead != end) ask();
+          const H h = halfedge(e, g_);
+          std::size_t a = vi(source(h, g_)), b = vi(target(h, g_));
+          if (a > b) std::swap(a, b);
+          const std::size_t k = ei(e);
+          if (!holding) {
+            held = k, ha = a, hb = b;
+            holding = true;
+            continue;
+          }
+          holding = false;
+          const Quadric_lanes sum = Relative_quadric::absolute_lanes(data_[ha], pos_[ha], data_[a], pos_[a]) +
+                                    Relative_quadric::absolute_lanes(data_[hb], pos_[hb], data_[b], pos_[b]);
+          double cost[2];
+          costs_two(sum, ha, hb, a, b, cost);
+          queue_.push(held, static_cast<float>(cost[0]));
+          queue_.push(k, static_cast<float>(cost[1]));
+        }
+        if (holding && evaluate(halfedge(edge_of(held), g_), pl)) queue_.push(held, static_cast<float>(pl.cost));
+        return;
+      }
+    }
     for (const E e : es) {
       if (prefetch_ && lead != end) ask();
       if (evaluate(halfedge(e, g_), pl)) queue_.push(ei(e), static_cast<float>(pl.cost));
@@ -1995,8 +2052,33 @@ class Collapser {
     } while (x != start);
     if (prefetch_)
       for (const H y : around_) queue_.prefetch_entry(ei(edge(y, g_)));
+    if constexpr (two_at_once) {
+      if (!locks_) {
+        // q's edges two at a time: q's data made absolute once, its
+        // neighbours' two by two (+ is commutative bit for bit).
+        const Quadric_lanes at_q = Quadric_lanes::both(stored_absolute(iq));
+        std::size_t i = 0;
+        for (; i + 1 < around_.size(); i += 2) {
+          std::size_t k[2], n[2];
+          for (int j = 0; j < 2; ++j) {
+            ahead_step();
+            const H x = around_[i + static_cast<std::size_t>(j)];
+            k[j] = ei(edge(x, g_));
+            n[j] = vi(source(x, g_));
+            refused_[k[j]] = 0;
+          }
+          const Quadric_lanes sum =
+              Relative_quadric::absolute_lanes(data_[n[0]], pos_[n[0]], data_[n[1]], pos_[n[1]]) + at_q;
+          double cost[2];
+          costs_two(sum, std::min(iq, n[0]), std::max(iq, n[0]), std::min(iq, n[1]), std::max(iq, n[1]), cost);
+          queue_.update(k[0], static_cast<float>(cost[0]));
+          queue_.update(k[1], static_cast<float>(cost[1]));
+        }
+        if (i < around_.size()) requeue(edge(around_[i], g_));
+      }
+    }
     for (const H x : around_) {
-      requeue(edge(x, g_));
+      if (!two_at_once || locks_) requeue(edge(x, g_));
       const V n = source(x, g_);
       if (hint_[vi(n)]) {
         hint_[vi(n)] = 0;
