@@ -1424,23 +1424,40 @@ class Collapser {
     // The link (p and q's neighbours but p and q, each once) is gathered on
     // the way for ring_projects_one_to_one.
     fresh_.clear();
-    star_.clear();
-    ring_.assign({ip, iq});
     border_link_.clear();
+    // The link and the star in scratch written through a pointer (a
+    // push_back a vertex and a face was a call: 83k a run on the shark);
+    // ring_ takes the link at once. The faces around p and q are hidden from
+    // the grid's query as they come (shown again after it).
+    std::size_t nring = 2, nstar = 0;
+    // Around q, the sources that came around p already are the apexes of
+    // the edge's faces, and only they (the link condition holds).
+    const std::uint32_t apex0 = border(h) ? ip : static_cast<std::uint32_t>(vi(target(next(h, g_), g_)));
+    const std::uint32_t apex1 =
+        border(opposite(h, g_)) ? ip : static_cast<std::uint32_t>(vi(target(next(opposite(h, g_), g_), g_)));
+    if (link_buf_.size() < 64) link_buf_.resize(64);
+    if (star_.size() < 64) star_.resize(64);
+    link_buf_[0] = ip;
+    link_buf_[1] = iq;
     bool border_star = false;
+    bool around_q = false;
     for (const V v : {source(h, g_), target(h, g_)}) {
       const H start = halfedge(v, g_);
       H y = start;
       do {
         // y: s → v, next(y): v → w; the face is (s, v, w).
         const std::uint32_t is = static_cast<std::uint32_t>(vi(source(y, g_)));
-        if (is != ip && is != iq && std::find(ring_.begin() + 2, ring_.end(), is) == ring_.end()) {
-          ring_.push_back(is);
+        if (is != ip && is != iq && !(around_q && (is == apex0 || is == apex1))) {
+          if (nring == link_buf_.size()) link_buf_.resize(2 * nring);
+          link_buf_[nring++] = is;
           if (vflags_[is] & on_border) border_link_.push_back(opposite(y, g_));
         }
         const F fy = face(y, g_);
         if (fy != boost::graph_traits<G>::null_face()) {
-          star_.push_back(static_cast<std::uint32_t>(fi(fy)));
+          const std::uint32_t f = static_cast<std::uint32_t>(fi(fy));
+          if (nstar == star_.size()) star_.resize(2 * nstar);
+          star_[nstar++] = f;
+          grid_.hide(f);
           const std::uint32_t iw = static_cast<std::uint32_t>(vi(target(next(y, g_), g_)));
           // (One branch, not four: the faces at p or q come at the walk's ends.)
           if ((is != ip) & (is != iq) & (iw != ip) & (iw != iq)) fresh_.push_back({{pos_[is], x, pos_[iw]}, {is, iq, iw}});
@@ -1450,8 +1467,16 @@ class Collapser {
         if (border(opposite(y, g_))) border_star = true;
         y = opposite(next(y, g_), g_);
       } while (y != start);
+      around_q = true;
     }
-    if (fresh_.empty()) return true;
+    ring_.assign(link_buf_.data(), link_buf_.data() + nring);
+    auto show_star = [&] {
+      for (std::size_t i = 0; i < nstar; ++i) grid_.show(star_[i]);
+    };
+    if (fresh_.empty()) {
+      show_star();
+      return true;
+    }
     // The new faces' normals (the ring certificate sums them); the rest of
     // their planes when a test first needs it: 43-48 % of the certified
     // searches test no face (shark, armadillo 208k and 832k → 10 %;
@@ -1479,9 +1504,8 @@ class Collapser {
     // Not the faces around p or q (star_, from the walk; the two of the
     // edge twice): the grid passes over them.
     near_.clear();
-    for (const std::uint32_t f : star_) grid_.hide(f);
     grid_.query(all, near_);
-    for (const std::uint32_t f : star_) grid_.show(f);
+    show_star();
     // Their corners, read from the mesh. Where the mesh is large (prefetch_),
     // in stages, each a loop of independent reads (a face's halfedge, then
     // its corners, then their points and flags asked for): nearly every read
@@ -1516,7 +1540,6 @@ class Collapser {
 #ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
       verify_certificate(near_corners_);
 #endif
-      near_corners_.swap(foreign_);
     } else {
       for (std::size_t i = 0; i < fresh_.size(); ++i) complete_plane(i);
       for (std::size_t i = 0; i < fresh_.size(); ++i)
@@ -1527,8 +1550,11 @@ class Collapser {
     }
     // The faces left (not around p or q; their points were asked for
     // above): their boxes pick the candidates.
+    // (Not near_corners_.swap(foreign_) as until session 17: near_corners_
+    // then took foreign_'s smaller size, and its resize above zero-filled
+    // the difference, out of line, at every search.)
     candidates_.clear();
-    for (const auto& v : near_corners_) pick_candidate(v, all);
+    for (const auto& v : certified ? foreign_ : near_corners_) pick_candidate(v, all);
     const std::size_t nf = fresh_.size();
     for (const auto& [v, mask] : candidates_) {
       const Mesh_triangle<std::uint32_t> u = face_triangle(v);
@@ -2011,7 +2037,8 @@ class Collapser {
   volatile bool sink_ = false;      // a read's use, so that the compiler keeps it (ahead_step)
   std::vector<Box> fresh_box_;
   std::vector<std::uint32_t> near_; // faces a grid query found
-  std::vector<std::uint32_t> star_; // the faces around p and q (indices; the two of the edge twice)
+  std::vector<std::uint32_t> star_; // the faces around p and q (indices; the two of the edge twice), a prefix
+  std::vector<std::uint32_t> link_buf_; // stays_embedded's scratch for ring_
   std::vector<H> near_h_;           // a halfedge of each
   std::vector<std::pair<std::array<std::uint32_t, 3>, std::uint64_t>> candidates_; // corners, new faces its box meets
   std::vector<Fresh_plane> fresh_plane_;
