@@ -1498,6 +1498,7 @@ class Collapser {
       all.lo = all.lo.cwiseMin(b.lo);
       all.hi = all.hi.cwiseMax(b.hi);
     }
+    fresh_set_.assign(fresh_box_.data(), std::min(fresh_.size(), Box_set::capacity));
     // The grid's entries pick the faces whose box may meet the new ones'
     // (without reading them); the ring certificate (most searches) leaves
     // those with no corner in the ring; their points give the candidates.
@@ -1586,10 +1587,8 @@ class Collapser {
   void pick_candidate(const std::array<std::uint32_t, 3>& v, const Box& all) {
     const Box b = Box::of(pos_[v[0]], pos_[v[1]], pos_[v[2]]);
     if (!b.overlaps(all)) return;
-    std::uint64_t mask = 0;
-    for (std::size_t i = 0; i < std::min<std::size_t>(fresh_.size(), 64); ++i)
-      mask |= static_cast<std::uint64_t>(b.overlaps(fresh_box_[i])) << i;
-    if (mask == 0 && fresh_.size() <= 64) return;
+    const std::uint64_t mask = fresh_set_.meets(b);
+    if (mask == 0 && fresh_.size() <= Box_set::capacity) return;
     candidates_.push_back({v, mask});
   }
 
@@ -2036,6 +2035,7 @@ class Collapser {
   bool prefetch_ = true; // whether walks ahead and hints pay (not on a mesh that stays in cache)
   volatile bool sink_ = false;      // a read's use, so that the compiler keeps it (ahead_step)
   std::vector<Box> fresh_box_;
+  Box_set fresh_set_; // the first 64 of fresh_box_, by coordinate
   std::vector<std::uint32_t> near_; // faces a grid query found
   std::vector<std::uint32_t> star_; // the faces around p and q (indices; the two of the edge twice), a prefix
   std::vector<std::uint32_t> link_buf_; // stays_embedded's scratch for ring_
