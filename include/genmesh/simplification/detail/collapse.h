@@ -1549,15 +1549,27 @@ class Collapser {
               exact_test(fresh_[i], fresh_[j]))
             return false;
     }
-    // The faces left (not around p or q; their points were asked for
-    // above): their boxes pick the candidates.
-    // (Not near_corners_.swap(foreign_) as until session 17: near_corners_
-    // then took foreign_'s smaller size, and its resize above zero-filled
-    // the difference, out of line, at every search.)
-    candidates_.clear();
-    for (const auto& v : certified ? foreign_ : near_corners_) pick_candidate(v, all);
+    // The candidates: the faces left (not around p or q; their points were
+    // asked for above) with the new faces their boxes meet (bit i: new face
+    // i; from the 64th on always tested). Each is written, and kept where
+    // its mask is not empty, without a branch on that test, which goes
+    // either way, nor a test against the new faces' union first (until
+    // session 17 a push_back after both: shark → 10 %, guarded, 1.4 % more
+    // instructions now, 1 % faster). (Nor near_corners_.swap(foreign_) as
+    // until session 17: near_corners_ then took foreign_'s smaller size, and
+    // its resize above zero-filled the difference, out of line, each search.)
+    const auto& pool = certified ? foreign_ : near_corners_;
+    if (candidates_.size() < pool.size()) candidates_.resize(pool.size());
+    std::size_t ncand = 0;
+    const bool always = fresh_.size() > Box_set::capacity; // new faces beyond the mask: tested below
+    for (const auto& v : pool) {
+      const std::uint64_t mask = fresh_set_.meets(Box::of(pos_[v[0]], pos_[v[1]], pos_[v[2]]));
+      candidates_[ncand] = {v, mask};
+      ncand += (mask != 0) | always;
+    }
     const std::size_t nf = fresh_.size();
-    for (const auto& [v, mask] : candidates_) {
+    for (std::size_t ci = 0; ci < ncand; ++ci) {
+      const auto& [v, mask] = candidates_[ci];
       const Mesh_triangle<std::uint32_t> u = face_triangle(v);
       // u's own plane, for the new faces off_plane leaves undecided (where
       // the surface curves both ways, u's far corners straddle a new face's
@@ -1579,17 +1591,6 @@ class Collapser {
       }
     }
     return true;
-  }
-
-  // Lists the live face with corners v (not around p or q) with the new faces whose boxes
-  // its box meets (bit i: new face i; new faces from the 64th on are always
-  // tested), unless it meets none.
-  void pick_candidate(const std::array<std::uint32_t, 3>& v, const Box& all) {
-    const Box b = Box::of(pos_[v[0]], pos_[v[1]], pos_[v[2]]);
-    if (!b.overlaps(all)) return;
-    const std::uint64_t mask = fresh_set_.meets(b);
-    if (mask == 0 && fresh_.size() <= Box_set::capacity) return;
-    candidates_.push_back({v, mask});
   }
 
   // faces_intersect, counted.

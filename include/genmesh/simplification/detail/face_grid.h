@@ -156,20 +156,23 @@ inline std::size_t grid_select_scalar(const Grid_entry* e, std::size_t n, const 
 // → 10 %, guarded, Halfedge_mesh: 7 % faster, 5.6 % fewer instructions).
 inline std::size_t grid_select_sse2(const Grid_entry* e, std::size_t n, const Grid_probe& q, Grid_entry* out) {
   static_assert(std::endian::native == std::endian::little);
-  const __m128i need = _mm_set1_epi32(static_cast<int>(q.need)), hi = _mm_set1_epi32(static_cast<int>(q.hi)),
-                lo = _mm_set1_epi32(static_cast<int>(q.lo));
-  const __m128i low4 = _mm_set1_epi32(0x0f0f0f), bit4 = _mm_set1_epi32(0x101010);
+  // Each entry's bins tested where they are in its word (bytes 1-3; byte
+  // 0 the flags), and the start flags in the same compare (until session
+  // 17 the word shifted down a byte first and two compares; shark → 10 %,
+  // guarded, Surface_mesh: 0.4 % fewer instructions in all).
+  const __m128i hi = _mm_set1_epi32(static_cast<int>(q.hi << 8)), lo = _mm_set1_epi32(static_cast<int>(q.lo << 8));
+  const __m128i need = _mm_set1_epi32(static_cast<int>(q.need));
+  const __m128i low4 = _mm_set1_epi32(0x0f0f0f00), want = _mm_set1_epi32(static_cast<int>(0x10101000u | q.need)),
+                bit4 = _mm_set1_epi32(0x10101000);
   std::size_t i = 0, k = 0;
   for (; i + 4 <= n; i += 4) {
     const __m128 a = _mm_castsi128_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(e + i)));
     const __m128 b = _mm_castsi128_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(e + i + 2)));
     // The odd 32-bit words: each entry's flags and bins (little-endian).
     const __m128i u = _mm_castps_si128(_mm_shuffle_ps(a, b, _MM_SHUFFLE(3, 1, 3, 1)));
-    const __m128i w = _mm_srli_epi32(u, 8);
-    const __m128i t = _mm_and_si128(_mm_sub_epi32(hi, _mm_and_si128(_mm_srli_epi32(w, 4), low4)),
-                                    _mm_sub_epi32(_mm_or_si128(_mm_and_si128(w, low4), bit4), lo));
-    const __m128i ok = _mm_and_si128(_mm_cmpeq_epi32(_mm_and_si128(u, need), need),
-                                     _mm_cmpeq_epi32(_mm_and_si128(t, bit4), bit4));
+    const __m128i t = _mm_and_si128(_mm_sub_epi32(hi, _mm_and_si128(_mm_srli_epi32(u, 4), low4)),
+                                    _mm_sub_epi32(_mm_or_si128(_mm_and_si128(u, low4), bit4), lo));
+    const __m128i ok = _mm_cmpeq_epi32(_mm_or_si128(_mm_and_si128(t, bit4), _mm_and_si128(u, need)), want);
     const unsigned m = static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(ok)));
     out[k] = e[i];
     k += m & 1;
