@@ -1427,6 +1427,32 @@ TEST(FaceGrid, VectorWalkEqualsScalarWalk) {
   }
 }
 
+// Box_set::meets (two boxes at a time where SSE2 is there) says of each of
+// up to 64 boxes what Box::overlaps says: at random, with coordinates from
+// a few values so that boxes touch on faces, edges and corners, for every
+// count (odd ones leave a padding lane).
+TEST(FaceGrid, BoxSetMeetsAsOverlaps) {
+  namespace ds = genmesh::detail::simplification;
+  Xorshift64 next{0xBB67AE8584CAA73Bull};
+  auto box = [&next] {
+    auto c = [&next] { return static_cast<double>(next() % 7) * 0.5 - 1.5; };
+    const Eigen::Vector3d a{c(), c(), c()}, b{c(), c(), c()};
+    return ds::Box{a.cwiseMin(b), a.cwiseMax(b)};
+  };
+  std::vector<ds::Box> boxes(ds::Box_set::capacity);
+  ds::Box_set set;
+  for (int round = 0; round < 3000; ++round) {
+    const std::size_t n = static_cast<std::size_t>(round) % (ds::Box_set::capacity + 1);
+    for (std::size_t i = 0; i < n; ++i) boxes[i] = box();
+    set.assign(boxes.data(), n);
+    ASSERT_EQ(set.size(), n);
+    const ds::Box b = box();
+    std::uint64_t expected = 0;
+    for (std::size_t i = 0; i < n; ++i) expected |= static_cast<std::uint64_t>(b.overlaps(boxes[i])) << i;
+    ASSERT_EQ(set.meets(b), expected) << "round " << round;
+  }
+}
+
 // A box's corners in grid units, all six coordinates at once (SSE2), and a
 // point's (units(), two coordinates at once) are those of quantize() point
 // by point: at random, on bin and cell borders

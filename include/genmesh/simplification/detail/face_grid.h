@@ -49,6 +49,52 @@ struct Box {
   }
 };
 
+// Up to 64 boxes by coordinate: which of them a box meets, as a bit mask
+// (bit i: box i), the same as Box::overlaps box by box; where SSE2 is
+// there, two boxes a step (the guard's candidates against the new faces'
+// boxes: until session 17 one box at a time, six scalar compares).
+class Box_set {
+ public:
+  static constexpr std::size_t capacity = 64;
+  // Boxes b[0, n), n at most capacity.
+  void assign(const Box* b, std::size_t n) {
+    n_ = n;
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k) {
+        c_[k][i] = b[i].lo[k];
+        c_[3 + k][i] = b[i].hi[k];
+      }
+    if (n % 2 != 0)
+      for (auto& c : c_) c[n] = 0; // read, never reported (see meets)
+  }
+  std::size_t size() const { return n_; }
+  std::uint64_t meets(const Box& b) const {
+    std::uint64_t m = 0;
+#if defined(__SSE2__)
+    const __m128d lx = _mm_set1_pd(b.lo.x()), ly = _mm_set1_pd(b.lo.y()), lz = _mm_set1_pd(b.lo.z());
+    const __m128d hx = _mm_set1_pd(b.hi.x()), hy = _mm_set1_pd(b.hi.y()), hz = _mm_set1_pd(b.hi.z());
+    for (std::size_t i = 0; i < n_; i += 2) {
+      const __m128d x = _mm_and_pd(_mm_cmple_pd(lx, _mm_load_pd(&c_[3][i])), _mm_cmple_pd(_mm_load_pd(&c_[0][i]), hx));
+      const __m128d y = _mm_and_pd(_mm_cmple_pd(ly, _mm_load_pd(&c_[4][i])), _mm_cmple_pd(_mm_load_pd(&c_[1][i]), hy));
+      const __m128d z = _mm_and_pd(_mm_cmple_pd(lz, _mm_load_pd(&c_[5][i])), _mm_cmple_pd(_mm_load_pd(&c_[2][i]), hz));
+      m |= static_cast<std::uint64_t>(_mm_movemask_pd(_mm_and_pd(_mm_and_pd(x, y), z))) << i;
+    }
+    // The padding's bit (n odd).
+    return n_ == capacity ? m : m & ((std::uint64_t{1} << n_) - 1);
+#else
+    for (std::size_t i = 0; i < n_; ++i)
+      m |= static_cast<std::uint64_t>((b.lo.x() <= c_[3][i]) & (c_[0][i] <= b.hi.x()) & (b.lo.y() <= c_[4][i]) &
+                                      (c_[1][i] <= b.hi.y()) & (b.lo.z() <= c_[5][i]) & (c_[2][i] <= b.hi.z()))
+           << i;
+    return m;
+#endif
+  }
+
+ private:
+  std::size_t n_ = 0;
+  alignas(16) double c_[6][capacity]; // lo x, y, z, hi x, y, z
+};
+
 // A face listed in a grid cell: its slot, its version when listed (5 bits)
 // and on which axes its range starts at this cell (3 bits), and per axis
 // the bins of the cell (16 a side) its box covers there (lo << 4 | hi).
@@ -110,20 +156,23 @@ inline std::size_t grid_select_scalar(const Grid_entry* e, std::size_t n, const 
 // → 10 %, guarded, Halfedge_mesh: 7 % faster, 5.6 % fewer instructions).
 inline std::size_t grid_select_sse2(const Grid_entry* e, std::size_t n, const Grid_probe& q, Grid_entry* out) {
   static_assert(std::endian::native == std::endian::little);
-  const __m128i need = _mm_set1_epi32(static_cast<int>(q.need)), hi = _mm_set1_epi32(static_cast<int>(q.hi)),
-                lo = _mm_set1_epi32(static_cast<int>(q.lo));
-  const __m128i low4 = _mm_set1_epi32(0x0f0f0f), bit4 = _mm_set1_epi32(0x101010);
+  // Each entry's bins tested where they are in its word (bytes 1-3; byte
+  // 0 the flags), and the start flags in the same compare (until session
+  // 17 the word shifted down a byte first and two compares; shark → 10 %,
+  // guarded, Surface_mesh: 0.4 % fewer instructions in all).
+  const __m128i hi = _mm_set1_epi32(static_cast<int>(q.hi << 8)), lo = _mm_set1_epi32(static_cast<int>(q.lo << 8));
+  const __m128i need = _mm_set1_epi32(static_cast<int>(q.need));
+  const __m128i low4 = _mm_set1_epi32(0x0f0f0f00), want = _mm_set1_epi32(static_cast<int>(0x10101000u | q.need)),
+                bit4 = _mm_set1_epi32(0x10101000);
   std::size_t i = 0, k = 0;
   for (; i + 4 <= n; i += 4) {
     const __m128 a = _mm_castsi128_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(e + i)));
     const __m128 b = _mm_castsi128_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(e + i + 2)));
     // The odd 32-bit words: each entry's flags and bins (little-endian).
     const __m128i u = _mm_castps_si128(_mm_shuffle_ps(a, b, _MM_SHUFFLE(3, 1, 3, 1)));
-    const __m128i w = _mm_srli_epi32(u, 8);
-    const __m128i t = _mm_and_si128(_mm_sub_epi32(hi, _mm_and_si128(_mm_srli_epi32(w, 4), low4)),
-                                    _mm_sub_epi32(_mm_or_si128(_mm_and_si128(w, low4), bit4), lo));
-    const __m128i ok = _mm_and_si128(_mm_cmpeq_epi32(_mm_and_si128(u, need), need),
-                                     _mm_cmpeq_epi32(_mm_and_si128(t, bit4), bit4));
+    const __m128i t = _mm_and_si128(_mm_sub_epi32(hi, _mm_and_si128(_mm_srli_epi32(u, 4), low4)),
+                                    _mm_sub_epi32(_mm_or_si128(_mm_and_si128(u, low4), bit4), lo));
+    const __m128i ok = _mm_cmpeq_epi32(_mm_or_si128(_mm_and_si128(t, bit4), _mm_and_si128(u, need)), want);
     const unsigned m = static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(ok)));
     out[k] = e[i];
     k += m & 1;
