@@ -552,6 +552,7 @@ class Collapser {
       ++lead;
     };
     for (int i = 0; prefetch_ && i < lag && lead != end; ++i) ask();
+#if defined(__SSE2__)
     if constexpr (two_at_once) {
       if (!locks_) {
         // Two edges at a time (no locks: every edge may collapse anywhere).
@@ -580,6 +581,7 @@ class Collapser {
         return;
       }
     }
+#endif
     for (const E e : es) {
       if (prefetch_ && lead != end) ask();
       if (evaluate(halfedge(e, g_), pl)) queue_.push(ei(e), static_cast<float>(pl.cost));
@@ -2078,6 +2080,7 @@ class Collapser {
     } while (x != start);
     if (prefetch_)
       for (const H y : around_) queue_.prefetch_entry(ei(edge(y, g_)));
+#if defined(__SSE2__)
     if constexpr (two_at_once) {
       if (!locks_) {
         // q's edges two at a time: q's data made absolute once, its
@@ -2103,6 +2106,7 @@ class Collapser {
         if (i < around_.size()) requeue(edge(around_[i], g_));
       }
     }
+#endif
     for (const H x : around_) {
       if (!two_at_once || locks_) requeue(edge(x, g_));
       const V n = source(x, g_);
