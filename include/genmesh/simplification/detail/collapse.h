@@ -1102,9 +1102,14 @@ class Collapser {
         else if (is == b || iw == a) from = 0;
         if ((s_sides & w_sides & was_sides[from]) != 0) {
           Point lo, hi;
+          // Selects by masks: std::min and std::max compiled to branches
+          // here, which go either way (shark → 10 %, guarded, Surface_mesh:
+          // 29k of 0.99M mispredicted branches in callgrind's model).
+          auto lesser = [](std::uint32_t x, std::uint32_t y) { return y ^ ((x ^ y) & -static_cast<std::uint32_t>(x < y)); };
+          auto greater = [](std::uint32_t x, std::uint32_t y) { return y ^ ((x ^ y) & -static_cast<std::uint32_t>(x > y)); };
           for (int i = 0; i < 3; ++i) {
-            lo[i] = std::min(std::min(us[i], uw[i]), uq[i]);
-            hi[i] = std::max(std::max(us[i], uw[i]), uq[i]);
+            lo[i] = lesser(lesser(us[i], uw[i]), uq[i]);
+            hi[i] = greater(greater(us[i], uw[i]), uq[i]);
           }
           grid_.insert(static_cast<std::uint32_t>(sf), lo, hi);
         }
