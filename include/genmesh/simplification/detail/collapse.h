@@ -174,8 +174,9 @@ inline bool is_simple_polygon(std::span<const std::array<double, 2>> q) {
                  y1 = std::max(a[1], b[1]);
     for (std::size_t j = i + 2; j < (i == 0 ? n - 1 : n); ++j) {
       const auto &c = q[j], &d = q[j + 1 == n ? 0 : j + 1];
-      if (std::max(c[0], d[0]) < x0 || std::min(c[0], d[0]) > x1 || std::max(c[1], d[1]) < y0 ||
-          std::min(c[1], d[1]) > y1)
+      // (One branch, not four: most pairs are apart, along either axis.)
+      if ((std::max(c[0], d[0]) < x0) | (std::min(c[0], d[0]) > x1) | (std::max(c[1], d[1]) < y0) |
+          (std::min(c[1], d[1]) > y1))
         continue;
       const int o1 = orient(a, b, c), o2 = orient(a, b, d);
       if (o1 == o2 && o1 != 0) continue; // c and d strictly on one side of ab's line
@@ -1400,7 +1401,7 @@ class Collapser {
           seen = false;
           break;
         }
-        crossings += a[1] < px[1] && px[1] <= b[1];
+        crossings += (a[1] < px[1]) & (px[1] <= b[1]);
       }
       if (seen) {
         // (Another number of crossings: ∂U winds around x that often, so
