@@ -246,8 +246,7 @@ struct Relative_quadric {
   /// operations on the same values.
   [[gnu::always_inline]] static Quadric_lanes absolute_lanes(const Relative_quadric& p, const Eigen::Vector3d& op,
                                                              const Relative_quadric& q, const Eigen::Vector3d& oq) {
-    const Lanes l = Lanes::absolute(p, op, q, oq);
-    return {l.a00, l.a01, l.a02, l.a11, l.a12, l.a22, l.b0, l.b1, l.b2, l.c};
+    return Lanes::absolute(p, op, q, oq); // its terms (the origins dropped)
   }
 #endif
 
@@ -258,16 +257,7 @@ struct Relative_quadric {
                                                 const Eigen::Vector3d& oq, const Quadric& d) {
 #if defined(__SSE2__)
     Lanes l = Lanes::absolute(p, op, q, oq);
-    l.a00 = _mm_add_pd(l.a00, _mm_set1_pd(d.a00));
-    l.a01 = _mm_add_pd(l.a01, _mm_set1_pd(d.a01));
-    l.a02 = _mm_add_pd(l.a02, _mm_set1_pd(d.a02));
-    l.a11 = _mm_add_pd(l.a11, _mm_set1_pd(d.a11));
-    l.a12 = _mm_add_pd(l.a12, _mm_set1_pd(d.a12));
-    l.a22 = _mm_add_pd(l.a22, _mm_set1_pd(d.a22));
-    l.b0 = _mm_add_pd(l.b0, _mm_set1_pd(d.b0));
-    l.b1 = _mm_add_pd(l.b1, _mm_set1_pd(d.b1));
-    l.b2 = _mm_add_pd(l.b2, _mm_set1_pd(d.b2));
-    l.c = _mm_add_pd(l.c, _mm_set1_pd(d.c));
+    static_cast<Quadric_lanes&>(l) = l + Quadric_lanes::both(d);
     // of(), lane by lane.
     const __m128d x = l.x, y = l.y, z = l.z;
     const __m128d g0 = _mm_add_pd(
@@ -301,10 +291,9 @@ struct Relative_quadric {
 
  private:
 #if defined(__SSE2__)
-  // Two relative quadrics made absolute side by side: lane 0 p's term,
-  // lane 1 q's, and the origins' coordinates.
-  struct Lanes {
-    __m128d a00, a01, a02, a11, a12, a22, b0, b1, b2, c;
+  // Two relative quadrics made absolute side by side (lane 0 p's term, lane
+  // 1 q's), with the origins' coordinates.
+  struct Lanes : Quadric_lanes {
     __m128d x, y, z;
 
     [[gnu::always_inline]] static Lanes absolute(const Relative_quadric& p, const Eigen::Vector3d& op,
