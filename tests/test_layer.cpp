@@ -174,6 +174,93 @@ TEST(PriorityQueue, KeyedCompareBreaksTiesAnd32BitKeys) {
   EXPECT_EQ(order, (std::vector<std::size_t>{5, 1, 3, 4, 2, 0}));
 }
 
+// Float priorities in an 8-ary heap with 32-bit keys, as simplify's queue:
+// the children are picked by their priorities alone (SSE2 for full groups
+// of eight, selects for the last group) and by the full order among ties.
+// Priorities from a few values (ties in most groups, and -0.0 tied with
+// +0.0), ties by a rank derived from the key (a keyed Compare that says it
+// refines <) or by the key (std::less); second() checked too.
+struct Float_by_rank {
+  static constexpr bool refines_less = true;
+  const std::vector<std::uint32_t>* rank;
+  bool operator()(float a, std::size_t ka, float b, std::size_t kb) const {
+    if (a < b) return true;
+    if (b < a) return false;
+    return (*rank)[ka] < (*rank)[kb];
+  }
+};
+
+template <class Compare>
+void run_random_float_sequence(unsigned seed, std::size_t key_bound, int values, int steps) {
+  std::mt19937 rng(seed);
+  std::vector<std::uint32_t> rank(key_bound);
+  for (std::size_t k = 0; k < key_bound; ++k) rank[k] = static_cast<std::uint32_t>(k);
+  std::shuffle(rank.begin(), rank.end(), rng);
+  auto order = [&](float a, std::size_t ka, float b, std::size_t kb) {
+    if (a < b) return true;
+    if (b < a) return false;
+    if constexpr (std::is_same_v<Compare, Float_by_rank>) return rank[ka] < rank[kb];
+    else return ka < kb;
+  };
+  auto make = [&] {
+    if constexpr (std::is_same_v<Compare, Float_by_rank>)
+      return genmesh::Mutable_priority_queue<float, Compare, std::uint32_t, 8>(key_bound, Compare{&rank});
+    else
+      return genmesh::Mutable_priority_queue<float, Compare, std::uint32_t, 8>(key_bound);
+  };
+  auto q = make();
+  std::map<std::size_t, float> ref;
+  auto ref_sorted = [&] {
+    std::vector<std::pair<float, std::size_t>> v;
+    for (const auto& [k, p] : ref) v.push_back({p, k});
+    std::sort(v.begin(), v.end(), [&](const auto& x, const auto& y) { return order(x.first, x.second, y.first, y.second); });
+    return v;
+  };
+  const auto prio = [&] {
+    const unsigned v = rng() % static_cast<unsigned>(values);
+    return v == 0 ? ((rng() & 1) ? -0.0f : 0.0f) : static_cast<float>(v) * 0.25f;
+  };
+  for (int s = 0; s < steps; ++s) {
+    const std::size_t k = rng() % key_bound;
+    switch (rng() % 6) {
+      case 0:
+      case 1:
+      case 2: {
+        const float p = prio();
+        q.update(k, p);
+        ref[k] = p;
+        break;
+      }
+      case 3:
+        q.erase(k);
+        ref.erase(k);
+        break;
+      default:
+        if (!ref.empty()) {
+          const auto v = ref_sorted();
+          if (v.size() >= 2) {
+            ASSERT_EQ(q.second(), v[1].second) << "step " << s;
+          }
+          ASSERT_EQ(q.pop(), v[0].second) << "step " << s;
+          ref.erase(v[0].second);
+        }
+        break;
+    }
+    ASSERT_EQ(q.size(), ref.size());
+  }
+  for (const auto& [p, k] : ref_sorted()) ASSERT_EQ(q.pop(), k);
+  EXPECT_TRUE(q.empty());
+}
+
+TEST(PriorityQueue, FloatPrioritiesInAnEightAryHeapMatchReference) {
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    run_random_float_sequence<Float_by_rank>(seed, 600, 5, 4000);        // many ties
+    run_random_float_sequence<Float_by_rank>(seed + 50, 600, 1000, 4000);
+    run_random_float_sequence<std::less<float>>(seed + 100, 600, 5, 4000);
+    run_random_float_sequence<std::less<float>>(seed + 150, 600, 1000, 4000);
+  }
+}
+
 TEST(PriorityQueue, UpdateEraseGrowClear) {
   genmesh::Mutable_priority_queue<int> q;  // key bound 0: push grows it
   EXPECT_TRUE(q.empty());

@@ -819,6 +819,7 @@ class Collapser {
 
   // The queue's order: by cost, ties by the vertex-index pair.
   struct Order {
+    static constexpr bool refines_less = true; // the pair only breaks ties (see Mutable_priority_queue)
     const Collapser* c;
     bool operator()(float a, std::size_t ka, float b, std::size_t kb) const {
       if (a < b) return true;
