@@ -1133,7 +1133,8 @@ void cgal_garland_heckbert(genmesh_test::Surface_mesh& m, const Face_count_stop&
 }
 
 // simplify shifts two vertices' stored quadrics side by side
-// (Relative_quadric::absolute_sum, add_to_two: SSE2 lanes where available);
+// (Relative_quadric::absolute_sum, add_to_two, add_to_one: SSE2 lanes where
+// available);
 // the meshes stay the same only if every term equals the one-at-a-time form
 // bit for bit. Random planes and origins at several scales.
 TEST(SimplificationQuadric, PairsEqualTheScalarFormsBitForBit) {
@@ -1161,6 +1162,9 @@ TEST(SimplificationQuadric, PairsEqualTheScalarFormsBitForBit) {
     Relative_quadric::add_to_two(p2, op, q2, oq, d);
     ASSERT_TRUE(same(p2, Relative_quadric::of(p.absolute(op) + d, op))) << "add_to_two p, case " << i;
     ASSERT_TRUE(same(q2, Relative_quadric::of(q.absolute(oq) + d, oq))) << "add_to_two q, case " << i;
+    Relative_quadric p3 = p;
+    Relative_quadric::add_to_one(p3, op, d);
+    ASSERT_TRUE(same(p3, p2)) << "add_to_one, case " << i;
   }
 }
 

@@ -256,6 +256,30 @@ struct Relative_quadric {
   [[gnu::always_inline]] static void add_to_two(Relative_quadric& p, const Eigen::Vector3d& op, Relative_quadric& q,
                                                 const Eigen::Vector3d& oq, const Quadric& d) {
 #if defined(__SSE2__)
+    add_lanes<true>(p, op, q, oq, d);
+#else
+    p = of(p.absolute(op) + d, op);
+    q = of(q.absolute(oq) + d, oq);
+#endif
+  }
+
+  /// p = of(p.absolute(op) + d, op), the same operations on the same values;
+  /// with SSE2 in add_to_two's first lane, so that its stores are the pieces
+  /// that add_to_two and absolute_lanes load (see Lanes::absolute).
+  [[gnu::always_inline]] static void add_to_one(Relative_quadric& p, const Eigen::Vector3d& op, const Quadric& d) {
+#if defined(__SSE2__)
+    add_lanes<false>(p, op, p, op, d);
+#else
+    p = of(p.absolute(op) + d, op);
+#endif
+  }
+
+ private:
+#if defined(__SSE2__)
+  // add_to_two, or (two = false) add_to_one on p with q = p read again.
+  template <bool two_stored>
+  [[gnu::always_inline]] static void add_lanes(Relative_quadric& p, const Eigen::Vector3d& op, Relative_quadric& q,
+                                               const Eigen::Vector3d& oq, const Quadric& d) {
     Lanes l = Lanes::absolute(p, op, q, oq);
     static_cast<Quadric_lanes&>(l) = l + Quadric_lanes::both(d);
     // of(), lane by lane.
@@ -276,21 +300,15 @@ struct Relative_quadric {
     const __m128 t0 = two(l.a00, l.a01), t2 = two(l.a02, l.a11), t4 = two(l.a12, l.a22), t6 = two(g0, g1),
                  t8 = two(g2, co);
     _mm_storeu_ps(&p.a00, _mm_movelh_ps(t0, t2));
-    _mm_storeu_ps(&q.a00, _mm_movehl_ps(t2, t0));
     _mm_storeu_ps(&p.a12, _mm_movelh_ps(t4, t6)); // a12 a22 b0 b1
-    _mm_storeu_ps(&q.a12, _mm_movehl_ps(t6, t4));
-    p.b2 = _mm_cvtss_f32(t8);
-    p.c = _mm_cvtss_f32(_mm_shuffle_ps(t8, t8, 1));
-    q.b2 = _mm_cvtss_f32(_mm_shuffle_ps(t8, t8, 2));
-    q.c = _mm_cvtss_f32(_mm_shuffle_ps(t8, t8, 3));
-#else
-    p = of(p.absolute(op) + d, op);
-    q = of(q.absolute(oq) + d, oq);
-#endif
+    _mm_storel_pi(reinterpret_cast<__m64*>(&p.b2), t8); // b2 c
+    if constexpr (two_stored) {
+      _mm_storeu_ps(&q.a00, _mm_movehl_ps(t2, t0));
+      _mm_storeu_ps(&q.a12, _mm_movehl_ps(t6, t4));
+      _mm_storeh_pi(reinterpret_cast<__m64*>(&q.b2), t8);
+    }
   }
 
- private:
-#if defined(__SSE2__)
   // Two relative quadrics made absolute side by side (lane 0 p's term, lane
   // 1 q's), with the origins' coordinates.
   struct Lanes : Quadric_lanes {
@@ -298,13 +316,16 @@ struct Relative_quadric {
 
     [[gnu::always_inline]] static Lanes absolute(const Relative_quadric& p, const Eigen::Vector3d& op,
                                                  const Relative_quadric& q, const Eigen::Vector3d& oq) {
-      // The floats come in as (p, q) pairs: terms 0-3, 4-5 (of 4-7) and 6-9
-      // (the last four, so that no load passes the end of the struct).
+      // The floats come in as (p, q) pairs: terms 0-3, 4-7 and 8-9, the
+      // pieces store() writes (a load that spans two stores still in
+      // flight waits for both to reach the cache: initialize() adds to a
+      // vertex's quadric again a few faces later).
       const __m128 p0 = _mm_loadu_ps(&p.a00), q0 = _mm_loadu_ps(&q.a00);
       const __m128 p4 = _mm_loadu_ps(&p.a12), q4 = _mm_loadu_ps(&q.a12);
-      const __m128 p6 = _mm_loadu_ps(&p.b0), q6 = _mm_loadu_ps(&q.b0);
+      const __m128 p8 = _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(&p.b2)),
+                   q8 = _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(&q.b2));
       const __m128 l0 = _mm_unpacklo_ps(p0, q0), h0 = _mm_unpackhi_ps(p0, q0);
-      const __m128 l4 = _mm_unpacklo_ps(p4, q4), l6 = _mm_unpacklo_ps(p6, q6), h6 = _mm_unpackhi_ps(p6, q6);
+      const __m128 l4 = _mm_unpacklo_ps(p4, q4), l6 = _mm_unpackhi_ps(p4, q4), h6 = _mm_unpacklo_ps(p8, q8);
       Lanes r;
       r.a00 = _mm_cvtps_pd(l0);
       r.a01 = _mm_cvtps_pd(_mm_movehl_ps(l0, l0));

@@ -422,7 +422,10 @@ class Collapser {
     if constexpr (relative) data_[i] = Relative_quadric::of(d, pos_[i]);
     else data_[i] = d;
   }
-  void add_data(std::size_t i, const Data& d) { set_data(i, simplification::merge(policy_, vertex_data(i), d)); }
+  void add_data(std::size_t i, const Data& d) {
+    if constexpr (summed) Relative_quadric::add_to_one(data_[i], pos_[i], d); // stored as add_to_two stores
+    else set_data(i, simplification::merge(policy_, vertex_data(i), d));
+  }
 
   // The box of the vertices' points (empty without vertices).
   Eigen::AlignedBox3d points_box() const {
