@@ -399,22 +399,53 @@ bool can_collapse_edge(edge_descriptor_t<G> e, const G& g) {
   // test in simplification, where everything else is the edge's own star).
   if (top && (!lo::triangle_at(pq, g) || lo::fan_below(next(pq, g), 3, g))) return false;
   if (bottom && (!lo::triangle_at(qp, g) || lo::fan_below(next(qp, g), 3, g))) return false;
-  if (!does_satisfy_link_condition(e, g)) return false;
-  // The corners of p's other faces that are not p's neighbours: the targets
-  // from next(next(x)) to before prev(x). A triangle has none (prev(x) ==
-  // next(next(x)); prev shares x's cache line on the pointer backends).
-  const auto q = target(pq, g);   // one declaration per type: clang refuses mixed deductions
+  // does_satisfy_link_condition(e, g), and the corners of p's other faces,
+  // in one walk around q and one around p (the separate tests walked p's fan
+  // three times: its neighbours, whether it is on the border, its faces).
+  const auto q = target(pq, g);
+  const auto vl = target(next(pq, g), g), vr = target(next(qp, g), g);
   const auto ft = face(pq, g), fb = face(qp, g);
+  boost::container::small_vector<vertex_descriptor_t<G>, 16> around_q;
+  bool q_border = true; // an isolated q counts as a border vertex (border_vertex)
+  if (const auto sq = halfedge(q, g); sq != lo::null_h<G>()) {
+    q_border = false;
+    auto y = sq;
+    do {
+      around_q.push_back(source(y, g));
+      q_border |= lo::border(y, g);
+      y = opposite(next(y, g), g);
+    } while (y != sq);
+  }
+  bool p_border = false;
   auto x = qp; // the halfedges into p
   do {
+    // Common neighbours of p and q must be the opposite corners of e's faces.
+    const auto k = source(x, g);
+    if (k != q && !((k == vl && top) || (k == vr && bottom)) &&
+        std::find(around_q.begin(), around_q.end(), k) != around_q.end())
+      return false;
     const auto f = face(x, g);
-    if (f != lo::null_f<G>() && f != ft && f != fb) {
+    if (f == lo::null_f<G>()) {
+      p_border = true;
+    } else if (f != ft && f != fb) {
+      // The corners of p's other faces that are not p's neighbours: the
+      // targets from next(next(x)) to before prev(x). A triangle has none
+      // (prev(x) == next(next(x)); prev shares x's cache line on the pointer
+      // backends).
       const auto last = prev(x, g);
       for (auto y = next(next(x, g), g); y != last; y = next(y, g))
         if (target(y, g) == q) return false;
     }
     x = opposite(next(x, g), g);
   } while (x != qp);
+  // link_condition_beyond_neighbours, with the ends' border flags found above.
+  if (top && lo::border(opposite(next(pq, g), g), g) && lo::border(opposite(prev(pq, g), g), g)) return false;
+  if (bottom && lo::border(opposite(next(qp, g), g), g) && lo::border(opposite(prev(qp, g), g), g)) return false;
+  if (top && bottom) {
+    if (p_border && q_border) return false;
+    if (lo::tetrahedron_at(pq, g)) return false;
+    if (next(pq, g) == opposite(prev(qp, g), g) && prev(pq, g) == opposite(next(qp, g), g)) return false;
+  }
   return true;
 }
 
