@@ -1494,7 +1494,7 @@ class Collapser {
     for (const auto& t : fresh_)
       if (!positive({t.p[0][k0], t.p[0][k1]}, px, {t.p[2][k0], t.p[2][k1]})) return false;
     for (std::size_t i = 0; i < nlinked_; ++i) {
-      const std::array<std::uint32_t, 3>& v = linked_[i];
+      const std::array<std::uint32_t, 3>& v = near_corners_[linked_[i]];
       if (!positive(at(v[0]), at(v[1]), at(v[2]))) return false;
     }
     if (!border_star) {
@@ -1668,11 +1668,12 @@ class Collapser {
 
   // ring_projects_one_to_one's pass over near_corners_ (the faces the query
   // found, but p's and q's; the link marked): the faces with no corner in
-  // the link to foreign_, the others (U's but the new ones) to linked_, and
-  // ∂U's edges to ring_edges_ (first nforeign_, nlinked_, nring_edges_;
-  // written through pointers, each array as long as near_corners_ at least:
-  // a push_back was a call once the instances of projects_one_to_one_along
-  // had grown the function).
+  // the link to foreign_, the others (U's but the new ones) to linked_ (by
+  // their index in near_corners_: until session 18's last step their
+  // corners, two copies a face), and ∂U's edges to ring_edges_ (first
+  // nforeign_, nlinked_, nring_edges_; written through pointers, each array
+  // as long as near_corners_ at least: a push_back was a call once the
+  // instances of projects_one_to_one_along had grown the function).
   void classify_near() {
     const std::size_t n = near_corners_.size();
     if (foreign_.size() < n) {
@@ -1680,15 +1681,16 @@ class Collapser {
       linked_.resize(2 * n);
     }
     if (ring_edges_.size() < n) ring_edges_.resize(2 * n);
-    std::array<std::uint32_t, 3>* const foreign = foreign_.data();
-    std::array<std::uint32_t, 3>* const linked = linked_.data();
+    std::uint32_t* const foreign = foreign_.data();
+    std::uint32_t* const linked = linked_.data();
     std::uint64_t* const edges = ring_edges_.data();
     std::size_t nforeign = 0, nlinked = 0, nedges = 0;
     // A bit per unordered vertex pair (a hash of the two), set for every
     // edge kept: a twin is searched for only where its bit is set. (Shark →
     // 10 %: 2 of 60k searches found one; each scanned all ~7 edges kept.)
     std::uint64_t kept = 0;
-    for (const std::array<std::uint32_t, 3>& v : near_corners_) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::array<std::uint32_t, 3>& v = near_corners_[k];
       const std::uint8_t m0 = vflags_[v[0]], m1 = vflags_[v[1]], m2 = vflags_[v[2]];
       // (Shifts and masks, not `?:` and `% 3` as until session 16: shark →
       // 10 %, guarded, Surface_mesh: 0.3 % fewer instructions; selects such
@@ -1696,8 +1698,8 @@ class Collapser {
       static_assert(link == 4);
       const unsigned l = (m0 & link) >> 2 | (m1 & link) >> 1 | (m2 & link);
       // Written to both, kept in one (the test goes either way).
-      foreign[nforeign] = v;
-      linked[nlinked] = v;
+      foreign[nforeign] = static_cast<std::uint32_t>(k);
+      linked[nlinked] = static_cast<std::uint32_t>(k);
       nforeign += l == 0;
       nlinked += l != 0;
       if (l == 0 || (l & (l - 1)) != 0) continue; // none or two or three corners in the link
@@ -1868,12 +1870,16 @@ class Collapser {
     // instructions now, 1 % faster). (Nor near_corners_.swap(foreign_) as
     // until session 17: near_corners_ then took foreign_'s smaller size, and
     // its resize above zero-filled the difference, out of line, each search.)
-    const std::span<const std::array<std::uint32_t, 3>> pool =
-        certified ? std::span<const std::array<std::uint32_t, 3>>(foreign_.data(), nforeign_) : near_corners_;
-    if (candidates_.size() < pool.size()) candidates_.resize(pool.size());
+    // (The pool by index: foreign_, or every near face, listed there.)
+    if (!certified) {
+      for (std::size_t k = 0; k < near_corners_.size(); ++k) foreign_[k] = static_cast<std::uint32_t>(k);
+      nforeign_ = near_corners_.size();
+    }
+    if (candidates_.size() < nforeign_) candidates_.resize(nforeign_);
     std::size_t ncand = 0;
     const bool always = fresh_.size() > Box_set::capacity; // new faces beyond the mask: tested below
-    for (const auto& v : pool) {
+    for (std::size_t k = 0; k < nforeign_; ++k) {
+      const std::array<std::uint32_t, 3>& v = near_corners_[foreign_[k]];
       const std::uint64_t mask = fresh_set_.meets(Box::of(pos_[v[0]], pos_[v[1]], pos_[v[2]]));
       candidates_[ncand] = {v, mask};
       ncand += (mask != 0) | always;
@@ -2377,8 +2383,8 @@ class Collapser {
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
   std::vector<std::uint32_t> ring_;   // p, q, then the link vertices (indices)
   std::vector<H> border_link_;        // a halfedge into each link vertex on the border
-  std::vector<std::array<std::uint32_t, 3>> foreign_; // near faces with no corner in ring_ (corners), the first nforeign_
-  std::vector<std::array<std::uint32_t, 3>> linked_;  // near faces with a corner in the link (corners), the first nlinked_
+  std::vector<std::uint32_t> foreign_; // near faces with no corner in ring_ (indices into near_corners_), the first nforeign_
+  std::vector<std::uint32_t> linked_;  // near faces with a corner in the link (indices into near_corners_), the first nlinked_
   std::size_t nforeign_ = 0, nlinked_ = 0;
   // Per vertex: has a border edge; for ring_projects_one_to_one, is p or q,
   // is in the link.
