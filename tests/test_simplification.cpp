@@ -596,20 +596,23 @@ TYPED_TEST(Simplification, TwistedWasherStaysApart) {
 // collapses next to either loop have link vertices on the border, or p or
 // q, which the ring certificate decides with their border edges in the
 // boundary of its faces (with p or q there, by showing that boundary a
-// simple polygon; also some off the border, where not every edge of it is
-// seen from the new point) — each such certificate checked by the exact
-// test (see the top): it must decide some of each kind, and the results
-// must be embedded (as the washer's).
+// simple polygon, or seen once from a point other than the new one; also
+// some off the border, where not every edge of it is seen from the new
+// point) — each such certificate checked by the exact test (see the top):
+// it must decide some of each kind, and the results must be embedded (as
+// the washer's).
 TYPED_TEST(Simplification, RingCertificateAtTheBorder) {
   namespace gs = genmesh::detail::simplification;
   Polygon_soup soup = genmesh::make_grid_with_hole(32);
   for (auto& p : soup.points) p.z() = 0.05 * std::sin(7 * p.x()) * std::cos(5 * p.y());
   const std::size_t before = gs::verified_border_certificates, stars = gs::verified_border_star_certificates,
-                    outlines = gs::verified_outline_certificates;
+                    outlines = gs::verified_outline_certificates,
+                    recentred = gs::verified_recentred_certificates;
   expect_guarded_runs_embedded<TypeParam>(soup, 0.05);
   EXPECT_GT(gs::verified_border_certificates, before);
   EXPECT_GT(gs::verified_border_star_certificates, stars);
   EXPECT_GT(gs::verified_outline_certificates, outlines);
+  EXPECT_GT(gs::verified_recentred_certificates, recentred);
 }
 
 // A flat annulus (the 32 × 32 grid with a hole, dyadic coordinates), in

@@ -70,11 +70,13 @@ namespace genmesh::detail::simplification {
 
 #ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
 // For the tests: the ring certificates verified with a link vertex on the
-// border, with p or q on the border, and with neither where ∂U was shown a
-// simple polygon (see Collapser::verify_certificate).
+// border, with p or q on the border, with neither where ∂U was shown a
+// simple polygon, and where it was shown seen once from a point other than
+// x (see Collapser::verify_certificate).
 inline std::size_t verified_border_certificates = 0;
 inline std::size_t verified_border_star_certificates = 0;
 inline std::size_t verified_outline_certificates = 0;
+inline std::size_t verified_recentred_certificates = 0;
 #endif
 
 /// What simplify() needs of a mesh: lists, index maps, points and the
@@ -1395,7 +1397,12 @@ class Collapser {
   // the second, the sum winds once: ∂U is one loop, and meets every ray
   // from x once — a simple closed curve. Cheap (one pass), but it cannot
   // hold where x is on ∂U, and fails where the outline turns away from x.
-  // (B) where (A) does not hold: ∂U's edges form one cycle that passes
+  // (A') where (A) does not hold: the same from another point c (the
+  // argument holds for every point not on ∂U; see projects_one_to_one_along
+  // for the points tried). Where every edge is positive seen from c, (A')
+  // decides as (B) would: winding once, ∂U is simple and passes each vertex
+  // once; winding more often, it is not.
+  // (B) where neither decides: ∂U's edges form one cycle that passes
   // each vertex once (each the source of one edge and the target of one),
   // and its projection is a simple polygon (is_simple_polygon, exact: no
   // zero edge, adjacent edges meeting only in their corner, no others
@@ -1448,6 +1455,11 @@ class Collapser {
     // Marks: the link; cleared before returning. (near_corners_ holds no
     // face around p or q.)
     for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] |= link;
+    // U's faces, the foreign faces and ∂U are the same along every axis:
+    // found once (until session 18 along each axis tried, (1)'s test of a
+    // face and its classification in one pass).
+    classify_near();
+    add_border_edges();
     outline_state_ = outline_unknown;
     // Any axis along which (1) and (S) hold will do; the largest component of
     // the normal sum first, then the other two. (Shark → 10 %: (1) fails on
@@ -1466,46 +1478,97 @@ class Collapser {
   }
 
   // Checks (1) and (S) of ring_projects_one_to_one along `axis`, the
-  // projection's two coordinates swapped if `swap` (the link marked): (S)
-  // by (A) where p and q are off the border, else or where (A) finds an
-  // edge of ∂U not seen from x, by (B).
+  // projection's two coordinates swapped if `swap` (U's faces and ∂U
+  // found): (S) by (A) where p and q are off the border, else or where (A)
+  // finds an edge of ∂U not seen from x, by (B).
   bool projects_one_to_one_along(const Eigen::Vector3d& x, int axis, bool swap, bool border_star) {
     // The projection as the two coordinates it keeps (project2's, in its
-    // order unless swapped); `at` projects a vertex by index (until session
-    // 15 a point, through project2's switch and the swap at every call;
-    // shark → 10 %, guarded, Halfedge_mesh: 2 % slower, 0.8 % more
-    // instructions).
-    const int k0 = swap ? (axis + 2) % 3 : (axis + 1) % 3, k1 = swap ? (axis + 1) % 3 : (axis + 2) % 3;
-    auto at = [this, k0, k1](std::size_t v) -> std::array<double, 2> {
-      const Eigen::Vector3d& p = pos_[v];
+    // order unless swapped), chosen once: each pair its own instance, whose
+    // `at` reads the two coordinates of a vertex by index at fixed offsets.
+    // (Until session 15 a point, through project2's switch and the swap at
+    // every call: shark → 10 %, guarded, Halfedge_mesh: 2 % slower, 0.8 %
+    // more instructions. Until session 18 the two coordinates' indices at
+    // run time: on Surface_mesh, whose point converts to a Vector3d by
+    // value, each vertex went through the stack to be indexed.)
+    switch (axis * 2 + swap) {
+      case 0: return projects_one_to_one_along<1, 2>(x, border_star);
+      case 1: return projects_one_to_one_along<2, 1>(x, border_star);
+      case 2: return projects_one_to_one_along<2, 0>(x, border_star);
+      case 3: return projects_one_to_one_along<0, 2>(x, border_star);
+      case 4: return projects_one_to_one_along<0, 1>(x, border_star);
+      default: return projects_one_to_one_along<1, 0>(x, border_star);
+    }
+  }
+  template <int k0, int k1>
+  bool projects_one_to_one_along(const Eigen::Vector3d& x, bool border_star) {
+    auto at = [this](std::size_t v) -> std::array<double, 2> {
+      const auto& p = pos_[v];
       return {p[k0], p[k1]};
     };
     const std::array<double, 2> px{x[k0], x[k1]};
+    // (1): the new faces (their points in fresh_: p[1] is x), then U's others.
     for (const auto& t : fresh_)
-      if (!positive(at(t.id[0]), px, at(t.id[2]))) return false;
-    if (!classify_near(at)) return false;
-    add_border_edges();
+      if (!positive({t.p[0][k0], t.p[0][k1]}, px, {t.p[2][k0], t.p[2][k1]})) return false;
+    for (std::size_t i = 0; i < nlinked_; ++i) {
+      const std::array<std::uint32_t, 3>& v = near_corners_[linked_[i]];
+      if (!positive(at(v[0]), at(v[1]), at(v[2]))) return false;
+    }
     if (!border_star) {
-      int crossings = 0;
-      bool seen = true;
-      for (const std::uint64_t e : ring_edges_) {
-        const auto a = at(e >> 32), b = at(e & 0xffffffffu);
-        if (!positive(px, a, b)) {
-          seen = false;
-          break;
-        }
-        crossings += (a[1] < px[1]) & (px[1] <= b[1]);
+      const int a = seen_once_from(at, px);
+      if (a >= 0) {
+        way_ = from_x;
+        return a == 1;
       }
-      if (seen) {
-        // (Another number of crossings: ∂U winds around x that often, so
-        // it is no simple curve, and (B) would fail too.)
-        by_outline_ = false;
-        return crossings == 1;
+    }
+    // (A) again from other points where x does not see all of ∂U or lies
+    // on it (p or q on the border): the mean of ∂U's corners, then the
+    // new faces' centroids, inside U near x. Any point will do (the
+    // argument of (A) holds for every point), and each decides as (B)
+    // would: a curve every edge of which turns positively around c, once
+    // in all, is simple, and passes each vertex once; winding more often it
+    // is not. (Shark and 208k armadillo → 10 %: (B) ran in 13 % of the
+    // searches, 4k instructions for the simple polygon and 1.5k for the
+    // cycle; these points decide 93 % and 81 % of them, a few hundred
+    // instructions each.)
+    if (nring_edges_ >= 3) {
+      double sx = 0, sy = 0;
+      for (std::size_t i = 0; i < nring_edges_; ++i) {
+        const auto a = at(ring_edges_[i] >> 32);
+        sx += a[0];
+        sy += a[1];
+      }
+      const double inv = 1.0 / static_cast<double>(nring_edges_);
+      int a = seen_once_from(at, {sx * inv, sy * inv});
+      for (std::size_t i = 0; a < 0 && i < fresh_.size(); ++i) {
+        const auto& t = fresh_[i];
+        a = seen_once_from(at, {(t.p[0][k0] + t.p[1][k0] + t.p[2][k0]) / 3, (t.p[0][k1] + t.p[1][k1] + t.p[2][k1]) / 3});
+      }
+      if (a >= 0) {
+        way_ = from_other;
+        return a == 1;
       }
     }
     const bool ok = outline_is_simple(at);
-    by_outline_ = ok;
+    way_ = by_outline;
     return ok;
+  }
+
+  // (A) from c: 1 where every edge of ∂U (projected by `at`) is strictly
+  // positive seen from c and crosses the ray from c along the first
+  // coordinate once (upwards, the only way a positive edge can), so that ∂U
+  // is a simple closed curve; 0 where every edge is positive but the count
+  // is another (∂U winds around c that often: no simple curve); -1 where an
+  // edge is not positive (undecided).
+  template <class At>
+  int seen_once_from(const At& at, const std::array<double, 2>& c) const {
+    int crossings = 0;
+    for (std::size_t i = 0; i < nring_edges_; ++i) {
+      const std::uint64_t e = ring_edges_[i];
+      const auto a = at(e >> 32), b = at(e & 0xffffffffu);
+      if (!positive(c, a, b)) return -1;
+      crossings += (a[1] < c[1]) & (c[1] <= b[1]);
+    }
+    return crossings == 1 ? 1 : 0;
   }
 
   // ∂U (ring_edges_) projected by `at` is a simple closed polygon: its
@@ -1532,14 +1595,16 @@ class Collapser {
   // lower_bound, whose branches cost more than the scans).
   bool outline_cycle_of_ring_edges() {
     outline_.clear();
-    const std::size_t n = ring_edges_.size();
+    const std::size_t n = nring_edges_;
     if (n < 3) return false;
-    const std::uint64_t start = ring_edges_[0] >> 32;
+    const std::uint64_t* const edges = ring_edges_.data();
+    const std::uint64_t start = edges[0] >> 32;
     std::uint64_t v = start;
     for (std::size_t k = 0; k < n; ++k) {
       std::uint64_t to = 0;
       std::size_t out = 0;
-      for (const std::uint64_t e : ring_edges_) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::uint64_t e = edges[i];
         const bool from_v = e >> 32 == v;
         out += from_v;
         to = from_v ? e & 0xffffffffu : to;
@@ -1567,7 +1632,11 @@ class Collapser {
           std::uint64_t s = vi(source(y, g_));
           if (s == ip) s = iq;
           const std::uint64_t e = out ? w << 32 | s : s << 32 | w;
-          if (std::find(ring_edges_.begin(), ring_edges_.end(), e) == ring_edges_.end()) ring_edges_.push_back(e);
+          const auto end = ring_edges_.begin() + static_cast<std::ptrdiff_t>(nring_edges_);
+          if (std::find(ring_edges_.begin(), end, e) == end) {
+            if (nring_edges_ == ring_edges_.size()) ring_edges_.resize(2 * nring_edges_ + 8);
+            ring_edges_[nring_edges_++] = e;
+          }
         }
         y = opposite(next(y, g_), g_);
       } while (y != into);
@@ -1581,11 +1650,13 @@ class Collapser {
   // verified_border_certificates where a link vertex is on the border, in
   // verified_border_star_certificates where p or q is, in
   // verified_outline_certificates where neither is and ∂U was shown a
-  // simple polygon (way (B)).
+  // simple polygon (way (B)), in verified_recentred_certificates where ∂U
+  // was shown seen once from a point other than x (way (A')).
   void verify_certificate(const std::vector<std::array<std::uint32_t, 3>>& found, bool border_star) const {
     if (!border_link_.empty()) ++verified_border_certificates;
     if (border_star) ++verified_border_star_certificates;
-    if (by_outline_ && !border_star) ++verified_outline_certificates;
+    if (way_ == by_outline && !border_star) ++verified_outline_certificates;
+    if (way_ == from_other) ++verified_recentred_certificates;
     for (std::size_t i = 0; i < fresh_.size(); ++i)
       for (std::size_t j = i + 1; j < fresh_.size(); ++j)
         if (faces_intersect(fresh_[i], fresh_[j]))
@@ -1606,44 +1677,67 @@ class Collapser {
   // every call inline. Until session 15 sure_orient2d first, with twice the
   // bound and its exactness checks, then orient2d; shark → 10 %, guarded,
   // Halfedge_mesh: 3 % slower, 4.6 % more instructions.)
-  static bool positive(const std::array<double, 2>& a, const std::array<double, 2>& b,
-                       const std::array<double, 2>& c) {
+  [[gnu::always_inline]] static bool positive(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                                              const std::array<double, 2>& c) {
     return detail::pred::orient2d(a[0], a[1], b[0], b[1], c[0], c[1]) > 0;
   }
 
   // ring_projects_one_to_one's pass over near_corners_ (the faces the query
   // found, but p's and q's; the link marked): the faces with no corner in
-  // the link go to foreign_; the others must project positively (`at`, by
-  // vertex index), and give ∂U's edges.
-  template <class At>
-  bool classify_near(const At& at) {
-    ring_edges_.clear();
-    foreign_.clear();
-    for (const std::array<std::uint32_t, 3>& v : near_corners_) {
+  // the link to foreign_, the others (U's but the new ones) to linked_ (by
+  // their index in near_corners_: until session 18's last step their
+  // corners, two copies a face), and ∂U's edges to ring_edges_ (first
+  // nforeign_, nlinked_, nring_edges_; written through pointers, each array
+  // as long as near_corners_ at least: a push_back was a call once the
+  // instances of projects_one_to_one_along had grown the function).
+  void classify_near() {
+    const std::size_t n = near_corners_.size();
+    if (foreign_.size() < n) {
+      foreign_.resize(2 * n);
+      linked_.resize(2 * n);
+    }
+    if (ring_edges_.size() < n) ring_edges_.resize(2 * n);
+    std::uint32_t* const foreign = foreign_.data();
+    std::uint32_t* const linked = linked_.data();
+    std::uint64_t* const edges = ring_edges_.data();
+    std::size_t nforeign = 0, nlinked = 0, nedges = 0;
+    // A bit per unordered vertex pair (a hash of the two), set for every
+    // edge kept: a twin is searched for only where its bit is set. (Shark →
+    // 10 %: 2 of 60k searches found one; each scanned all ~7 edges kept.)
+    std::uint64_t kept = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::array<std::uint32_t, 3>& v = near_corners_[k];
       const std::uint8_t m0 = vflags_[v[0]], m1 = vflags_[v[1]], m2 = vflags_[v[2]];
       // (Shifts and masks, not `?:` and `% 3` as until session 16: shark →
       // 10 %, guarded, Surface_mesh: 0.3 % fewer instructions; selects such
       // as `w == 2 ? 0 : w + 1` became branches, 33k more mispredicted.)
       static_assert(link == 4);
       const unsigned l = (m0 & link) >> 2 | (m1 & link) >> 1 | (m2 & link);
-      if (l == 0) {
-        foreign_.push_back(v);
-        continue;
-      }
-      if (!positive(at(v[0]), at(v[1]), at(v[2]))) return false;
-      if ((l & (l - 1)) != 0) continue; // two or three corners in the link
+      // Written to both, kept in one (the test goes either way).
+      foreign[nforeign] = static_cast<std::uint32_t>(k);
+      linked[nlinked] = static_cast<std::uint32_t>(k);
+      nforeign += l == 0;
+      nlinked += l != 0;
+      if (l == 0 || (l & (l - 1)) != 0) continue; // none or two or three corners in the link
       // The edge opposite the link corner, unless its twin came already.
       const int w = std::countr_zero(l);
       const std::uint64_t from = v[(0x021u >> 4 * w) & 3], to = v[(0x102u >> 4 * w) & 3]; // (w + 1) % 3, (w + 2) % 3
-      const auto twin = std::find(ring_edges_.begin(), ring_edges_.end(), to << 32 | from);
-      if (twin != ring_edges_.end()) {
-        *twin = ring_edges_.back();
-        ring_edges_.pop_back();
-      } else {
-        ring_edges_.push_back(from << 32 | to);
+      const std::uint64_t bit = std::uint64_t{1} << (((from ^ to) * 0x9e3779b97f4a7c15u) >> 58);
+      if ((kept & bit) != 0) {
+        const std::uint64_t twin = to << 32 | from;
+        std::size_t i = 0;
+        while (i < nedges && edges[i] != twin) ++i;
+        if (i < nedges) {
+          edges[i] = edges[--nedges];
+          continue;
+        }
       }
+      kept |= bit;
+      edges[nedges++] = from << 32 | to;
     }
-    return true;
+    nforeign_ = nforeign;
+    nlinked_ = nlinked;
+    nring_edges_ = nedges;
   }
 
   // Would the faces the collapse of edge(h) into target(h) at x makes meet
@@ -1792,11 +1886,16 @@ class Collapser {
     // instructions now, 1 % faster). (Nor near_corners_.swap(foreign_) as
     // until session 17: near_corners_ then took foreign_'s smaller size, and
     // its resize above zero-filled the difference, out of line, each search.)
-    const auto& pool = certified ? foreign_ : near_corners_;
-    if (candidates_.size() < pool.size()) candidates_.resize(pool.size());
+    // (The pool by index: foreign_, or every near face, listed there.)
+    if (!certified) {
+      for (std::size_t k = 0; k < near_corners_.size(); ++k) foreign_[k] = static_cast<std::uint32_t>(k);
+      nforeign_ = near_corners_.size();
+    }
+    if (candidates_.size() < nforeign_) candidates_.resize(nforeign_);
     std::size_t ncand = 0;
     const bool always = fresh_.size() > Box_set::capacity; // new faces beyond the mask: tested below
-    for (const auto& v : pool) {
+    for (std::size_t k = 0; k < nforeign_; ++k) {
+      const std::array<std::uint32_t, 3>& v = near_corners_[foreign_[k]];
       const std::uint64_t mask = fresh_set_.meets(Box::of(pos_[v[0]], pos_[v[1]], pos_[v[2]]));
       candidates_[ncand] = {v, mask};
       ncand += (mask != 0) | always;
@@ -2303,17 +2402,22 @@ class Collapser {
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
   std::vector<std::uint32_t> ring_;   // p, q, then the link vertices (indices)
   std::vector<H> border_link_;        // a halfedge into each link vertex on the border
-  std::vector<std::array<std::uint32_t, 3>> foreign_; // near faces with no corner in ring_ (corners)
+  std::vector<std::uint32_t> foreign_; // near faces with no corner in ring_ (indices into near_corners_), the first nforeign_
+  std::vector<std::uint32_t> linked_;  // near faces with a corner in the link (indices into near_corners_), the first nlinked_
+  std::size_t nforeign_ = 0, nlinked_ = 0;
   // Per vertex: has a border edge; for ring_projects_one_to_one, is p or q,
   // is in the link.
   static constexpr std::uint8_t on_border = 1, link = 4;
   std::vector<std::uint8_t> vflags_;
-  std::vector<std::uint64_t> ring_edges_; // ∂U (see ring_projects_one_to_one), from << 32 | to
+  std::vector<std::uint64_t> ring_edges_; // ∂U (see ring_projects_one_to_one), from << 32 | to; the first nring_edges_
+  std::size_t nring_edges_ = 0;
   std::vector<std::uint32_t> outline_;           // ∂U's vertices in its cycle's order
   std::vector<std::array<double, 2>> outline_pts_; // projected
   static constexpr std::uint8_t outline_unknown = 0, outline_cycle = 1, outline_none = 2;
   std::uint8_t outline_state_ = outline_unknown; // this search's outline_
-  bool by_outline_ = false; // the last certificate came from outline_is_simple
+  // How the last certificate showed (S): (A) from x, (A) from another point, (B).
+  static constexpr std::uint8_t from_x = 0, from_other = 1, by_outline = 2;
+  std::uint8_t way_ = from_x;
   std::vector<H> around_;           // the survivor's incoming halfedges
   Ahead ahead_[2];                  // the next edges' fans, walked ahead (see ahead_begin)
   bool prefetch_ = true; // whether walks ahead and hints pay (not on a mesh that stays in cache)
