@@ -17,7 +17,10 @@
 // increasing key order, so every backend pops the same sequence.
 //
 // Implementation: an indexed 4-ary heap (entries {priority, key} in one
-// array, a key → heap position array, moves instead of swaps while sifting).
+// array, a key → heap position array, moves instead of swaps while sifting;
+// where the priorities are floating point and the order refines <, the
+// smallest child is found without a branch per comparison; push_unordered
+// and heapify build a queue bottom-up).
 // Chosen by measurement against Boost.Heap's mutable heaps (d_ary_heap with
 // mutable_<true>, pairing_heap, fibonacci_heap) and CGAL's
 // Modifiable_priority_queue (its default boost::mutable_queue and its
