@@ -261,6 +261,43 @@ TEST(PriorityQueue, FloatPrioritiesInAnEightAryHeapMatchReference) {
   }
 }
 
+// A queue filled with push_unordered and heapify() pops what one filled
+// with push() pops (simplify builds its first queue so), and takes updates
+// and erases afterwards.
+TEST(PriorityQueue, HeapifyPopsAsPushDoes) {
+  for (unsigned seed = 1; seed <= 10; ++seed) {
+    std::mt19937 rng(seed);
+    const std::size_t n = 1 + rng() % 3000;
+    std::vector<std::uint32_t> rank(n);
+    for (std::size_t k = 0; k < n; ++k) rank[k] = static_cast<std::uint32_t>(k);
+    std::shuffle(rank.begin(), rank.end(), rng);
+    using Q = genmesh::Mutable_priority_queue<float, Float_by_rank, std::uint32_t, 8>;
+    Q pushed(n, Float_by_rank{&rank}), built(n, Float_by_rank{&rank});
+    for (std::size_t k = 0; k < n; ++k) {
+      if (rng() % 5 == 0) continue; // some keys left out
+      const float p = static_cast<float>(rng() % 7);
+      pushed.push(k, p);
+      built.push_unordered(k, p);
+    }
+    built.heapify();
+    ASSERT_EQ(built.size(), pushed.size());
+    for (int s = 0; s < 200 && !pushed.empty(); ++s) {
+      const std::size_t k = rng() % n;
+      const float p = static_cast<float>(rng() % 7);
+      if (s % 3 == 0) {
+        pushed.erase(k);
+        built.erase(k);
+      } else {
+        pushed.update(k, p);
+        built.update(k, p);
+      }
+      ASSERT_EQ(built.pop(), pushed.pop()) << "seed " << seed << " step " << s;
+    }
+    while (!pushed.empty()) ASSERT_EQ(built.pop(), pushed.pop());
+    EXPECT_TRUE(built.empty());
+  }
+}
+
 TEST(PriorityQueue, UpdateEraseGrowClear) {
   genmesh::Mutable_priority_queue<int> q;  // key bound 0: push grows it
   EXPECT_TRUE(q.empty());

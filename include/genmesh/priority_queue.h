@@ -17,7 +17,10 @@
 // increasing key order, so every backend pops the same sequence.
 //
 // Implementation: an indexed 4-ary heap (entries {priority, key} in one
-// array, a key → heap position array, moves instead of swaps while sifting).
+// array, a key → heap position array, moves instead of swaps while sifting;
+// where the priorities are floating point and the order refines <, the
+// smallest child is found without a branch per comparison; push_unordered
+// and heapify build a queue bottom-up).
 // Chosen by measurement against Boost.Heap's mutable heaps (d_ary_heap with
 // mutable_<true>, pairing_heap, fibonacci_heap) and CGAL's
 // Modifiable_priority_queue (its default boost::mutable_queue and its
@@ -94,6 +97,24 @@ class Mutable_priority_queue {
     if (key >= position_.size()) grow_for(key);
     heap_.push_back(Entry{std::move(p), static_cast<Index>(key)});
     sift_up(heap_.size() - 1);
+  }
+
+  /// Queues key with priority p without restoring the order: for filling
+  /// a queue with many keys at once, then heapify() before any other call
+  /// (top, pop, update, erase). Precondition: !contains(key).
+  void push_unordered(std::size_t key, Priority p) {
+    assert(!contains(key));
+    if (key >= position_.size()) grow_for(key);
+    position_[key] = static_cast<Index>(heap_.size());
+    heap_.push_back(Entry{std::move(p), static_cast<Index>(key)});
+  }
+  /// Restores the order after push_unordered (Floyd's construction: O(n),
+  /// sifting down from the last parent to the root). The pops that follow
+  /// are the same as after push() (the order is total).
+  void heapify() {
+    const std::size_t n = heap_.size();
+    if (n < 2) return;
+    for (std::size_t i = (n - 2) / arity + 1; i-- > 0;) sift_down(i);
   }
 
   /// Queues key with priority p, or moves it to priority p (up or down) if

@@ -605,18 +605,21 @@ class Collapser {
                                     Relative_quadric::absolute_lanes(data_[hb], pos_[hb], data_[b], pos_[b]);
           double cost[2];
           costs_two(sum, ha, hb, a, b, cost);
-          queue_.push(held, static_cast<float>(cost[0]));
-          queue_.push(k, static_cast<float>(cost[1]));
+          queue_.push_unordered(held, static_cast<float>(cost[0]));
+          queue_.push_unordered(k, static_cast<float>(cost[1]));
         }
-        if (holding && evaluate(halfedge(edge_of(held), g_), pl)) queue_.push(held, static_cast<float>(pl.cost));
+        if (holding && evaluate(halfedge(edge_of(held), g_), pl))
+          queue_.push_unordered(held, static_cast<float>(pl.cost));
+        queue_.heapify();
         return;
       }
     }
 #endif
     for (const E e : es) {
       if (prefetch_ && lead != end) ask();
-      if (evaluate(halfedge(e, g_), pl)) queue_.push(ei(e), static_cast<float>(pl.cost));
+      if (evaluate(halfedge(e, g_), pl)) queue_.push_unordered(ei(e), static_cast<float>(pl.cost));
     }
+    queue_.heapify();
   }
 
   // Schedule::passes. Each pass: every live edge's cost (the edges the
