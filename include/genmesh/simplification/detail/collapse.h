@@ -1043,6 +1043,9 @@ class Collapser {
   // within the allowed angle and a non-zero area when v moves to x.
   bool fan_keeps_normals(V v, V other, const Eigen::Vector3d& x) const {
     const std::size_t iv = vi(v);
+    // The options once, not at each face (read through o_, a reference, they
+    // were loaded again after every store).
+    const double cos2 = cos_max_ * cos_max_, max_aspect = o_.max_aspect_ratio, cos_min_angle = cos_min_angle_;
     const H start = halfedge(v, g_);
     H h = start;
     do {
@@ -1058,17 +1061,17 @@ class Collapser {
           if (!(l1 > 0)) return false;
           if (l0 > 0) {
             const double d = n0.dot(n1);
-            if (!(d > 0) || d * d < cos_max_ * cos_max_ * l0 * l1) return false;
+            if (!(d > 0) || d * d < cos2 * l0 * l1) return false;
           }
-          if (o_.max_aspect_ratio > 0) {
+          if (max_aspect > 0) {
             // No face above .max_aspect_ratio, unless it was as bad before.
             const double r1 = triangle_aspect_ratio(x, pos_[ia], pos_[ib]);
-            if (r1 > o_.max_aspect_ratio && r1 > triangle_aspect_ratio(pos_[iv], pos_[ia], pos_[ib])) return false;
+            if (r1 > max_aspect && r1 > triangle_aspect_ratio(pos_[iv], pos_[ia], pos_[ib])) return false;
           }
-          if (cos_min_angle_ < 1) {
+          if (cos_min_angle < 1) {
             // No corner below .min_angle, unless the face was as bad before.
             const double c1 = largest_corner_cosine(x, pos_[ia], pos_[ib]);
-            if (c1 > cos_min_angle_ && c1 > largest_corner_cosine(pos_[iv], pos_[ia], pos_[ib])) return false;
+            if (c1 > cos_min_angle && c1 > largest_corner_cosine(pos_[iv], pos_[ia], pos_[ib])) return false;
           }
         }
       }
