@@ -1441,7 +1441,11 @@ class Collapser {
     const int first = m.x() >= m.y() && m.x() >= m.z() ? 0 : m.y() >= m.z() ? 1 : 2;
     // Marks: the link; cleared before returning. (near_corners_ holds no
     // face around p or q.)
-    for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] |= link;
+    // (Through local pointers: a byte store may alias anything, and the
+    // vectors' bounds were loaded again at every step.)
+    std::uint8_t* const flags = vflags_.data();
+    const std::uint32_t* const ring_end = ring_.data() + ring_.size();
+    for (const std::uint32_t* r = ring_.data() + 2; r < ring_end; ++r) flags[*r] |= link;
     // U's faces, the foreign faces and ∂U are the same along every axis:
     // found once (until session 18 along each axis tried, (1)'s test of a
     // face and its classification in one pass).
@@ -1460,7 +1464,7 @@ class Collapser {
       const int axis = (first + i) % 3;
       if (m[axis] != 0) ok = projects_one_to_one_along(x, axis, sum[axis] < 0, border_star);
     }
-    for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] &= static_cast<std::uint8_t>(~link);
+    for (const std::uint32_t* r = ring_.data() + 2; r < ring_end; ++r) flags[*r] &= static_cast<std::uint8_t>(~link);
     return ok;
   }
 
@@ -1837,9 +1841,11 @@ class Collapser {
     if (prefetch_) {
       if constexpr (!native_faces)
         for (const std::uint32_t f : near_) prefetch(&face_h_[f]);
-      near_h_.clear();
-      for (const std::uint32_t f : near_) near_h_.push_back(face_halfedge(f));
-      for (std::size_t i = 0; i < near_h_.size(); ++i) near_corners_[i] = corners_of(near_h_[i]);
+      // (Written through a pointer: a push_back's capacity check a face.)
+      if (near_h_.size() < near_.size()) near_h_.resize(2 * near_.size());
+      H* const nh = near_h_.data();
+      for (std::size_t i = 0; i < near_.size(); ++i) nh[i] = face_halfedge(near_[i]);
+      for (std::size_t i = 0; i < near_.size(); ++i) near_corners_[i] = corners_of(nh[i]);
       for (const auto& v : near_corners_)
         for (const std::uint32_t c : v) {
           prefetch(pos_.address(c));
