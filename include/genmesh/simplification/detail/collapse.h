@@ -1709,11 +1709,14 @@ class Collapser {
       linked[nlinked] = static_cast<std::uint32_t>(k);
       nforeign += l == 0;
       nlinked += l != 0;
-      if (l == 0 || (l & (l - 1)) != 0) continue; // none or two or three corners in the link
-      // The edge opposite the link corner, unless its twin came already.
-      const int w = std::countr_zero(l);
+      // With one corner in the link, the edge opposite it, unless its twin
+      // came already: written always, kept where `single`, without a branch
+      // on it, which goes either way. (l | 8: an index for l = 0 too.)
+      const bool single = (l != 0) & ((l & (l - 1)) == 0);
+      const int w = std::countr_zero(l | 8u);
       const std::uint64_t from = v[(0x021u >> 4 * w) & 3], to = v[(0x102u >> 4 * w) & 3]; // (w + 1) % 3, (w + 2) % 3
-      const std::uint64_t bit = std::uint64_t{1} << (((from ^ to) * 0x9e3779b97f4a7c15u) >> 58);
+      const std::uint64_t keep = std::uint64_t{0} - single; // all ones where single
+      const std::uint64_t bit = (std::uint64_t{1} << (((from ^ to) * 0x9e3779b97f4a7c15u) >> 58)) & keep;
       if ((kept & bit) != 0) {
         const std::uint64_t twin = to << 32 | from;
         std::size_t i = 0;
@@ -1724,7 +1727,8 @@ class Collapser {
         }
       }
       kept |= bit;
-      edges[nedges++] = from << 32 | to;
+      edges[nedges] = from << 32 | to;
+      nedges += single;
     }
     nforeign_ = nforeign;
     nlinked_ = nlinked;
