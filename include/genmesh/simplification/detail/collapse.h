@@ -1062,6 +1062,9 @@ class Collapser {
   // within the allowed angle and a non-zero area when v moves to x.
   bool fan_keeps_normals(V v, V other, const Eigen::Vector3d& x) const {
     const std::size_t iv = vi(v);
+    // The options once, not at each face (read through o_, a reference, they
+    // were loaded again after every store).
+    const double cos2 = cos_max_ * cos_max_, max_aspect = o_.max_aspect_ratio, cos_min_angle = cos_min_angle_;
     const H start = halfedge(v, g_);
     H h = start;
     do {
@@ -1077,17 +1080,17 @@ class Collapser {
           if (!(l1 > 0)) return false;
           if (l0 > 0) {
             const double d = n0.dot(n1);
-            if (!(d > 0) || d * d < cos_max_ * cos_max_ * l0 * l1) return false;
+            if (!(d > 0) || d * d < cos2 * l0 * l1) return false;
           }
-          if (o_.max_aspect_ratio > 0) {
+          if (max_aspect > 0) {
             // No face above .max_aspect_ratio, unless it was as bad before.
             const double r1 = triangle_aspect_ratio(x, pos_[ia], pos_[ib]);
-            if (r1 > o_.max_aspect_ratio && r1 > triangle_aspect_ratio(pos_[iv], pos_[ia], pos_[ib])) return false;
+            if (r1 > max_aspect && r1 > triangle_aspect_ratio(pos_[iv], pos_[ia], pos_[ib])) return false;
           }
-          if (cos_min_angle_ < 1) {
+          if (cos_min_angle < 1) {
             // No corner below .min_angle, unless the face was as bad before.
             const double c1 = largest_corner_cosine(x, pos_[ia], pos_[ib]);
-            if (c1 > cos_min_angle_ && c1 > largest_corner_cosine(pos_[iv], pos_[ia], pos_[ib])) return false;
+            if (c1 > cos_min_angle && c1 > largest_corner_cosine(pos_[iv], pos_[ia], pos_[ib])) return false;
           }
         }
       }
@@ -1457,7 +1460,11 @@ class Collapser {
     const int first = m.x() >= m.y() && m.x() >= m.z() ? 0 : m.y() >= m.z() ? 1 : 2;
     // Marks: the link; cleared before returning. (near_corners_ holds no
     // face around p or q.)
-    for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] |= link;
+    // (Through local pointers: a byte store may alias anything, and the
+    // vectors' bounds were loaded again at every step.)
+    std::uint8_t* const flags = vflags_.data();
+    const std::uint32_t* const ring_end = ring_.data() + ring_.size();
+    for (const std::uint32_t* r = ring_.data() + 2; r < ring_end; ++r) flags[*r] |= link;
     // U's faces, the foreign faces and ∂U are the same along every axis:
     // found once (until session 18 along each axis tried, (1)'s test of a
     // face and its classification in one pass).
@@ -1476,7 +1483,7 @@ class Collapser {
       const int axis = (first + i) % 3;
       if (m[axis] != 0) ok = projects_one_to_one_along(x, axis, sum[axis] < 0, border_star);
     }
-    for (std::size_t k = 2; k < ring_.size(); ++k) vflags_[ring_[k]] &= static_cast<std::uint8_t>(~link);
+    for (const std::uint32_t* r = ring_.data() + 2; r < ring_end; ++r) flags[*r] &= static_cast<std::uint8_t>(~link);
     return ok;
   }
 
@@ -1721,11 +1728,14 @@ class Collapser {
       linked[nlinked] = static_cast<std::uint32_t>(k);
       nforeign += l == 0;
       nlinked += l != 0;
-      if (l == 0 || (l & (l - 1)) != 0) continue; // none or two or three corners in the link
-      // The edge opposite the link corner, unless its twin came already.
-      const int w = std::countr_zero(l);
+      // With one corner in the link, the edge opposite it, unless its twin
+      // came already: written always, kept where `single`, without a branch
+      // on it, which goes either way. (l | 8: an index for l = 0 too.)
+      const bool single = (l != 0) & ((l & (l - 1)) == 0);
+      const int w = std::countr_zero(l | 8u);
       const std::uint64_t from = v[(0x021u >> 4 * w) & 3], to = v[(0x102u >> 4 * w) & 3]; // (w + 1) % 3, (w + 2) % 3
-      const std::uint64_t bit = std::uint64_t{1} << (((from ^ to) * 0x9e3779b97f4a7c15u) >> 58);
+      const std::uint64_t keep = std::uint64_t{0} - single; // all ones where single
+      const std::uint64_t bit = (std::uint64_t{1} << (((from ^ to) * 0x9e3779b97f4a7c15u) >> 58)) & keep;
       if ((kept & bit) != 0) {
         const std::uint64_t twin = to << 32 | from;
         std::size_t i = 0;
@@ -1736,7 +1746,8 @@ class Collapser {
         }
       }
       kept |= bit;
-      edges[nedges++] = from << 32 | to;
+      edges[nedges] = from << 32 | to;
+      nedges += single;
     }
     nforeign_ = nforeign;
     nlinked_ = nlinked;
@@ -1853,9 +1864,11 @@ class Collapser {
     if (prefetch_) {
       if constexpr (!native_faces)
         for (const std::uint32_t f : near_) prefetch(&face_h_[f]);
-      near_h_.clear();
-      for (const std::uint32_t f : near_) near_h_.push_back(face_halfedge(f));
-      for (std::size_t i = 0; i < near_h_.size(); ++i) near_corners_[i] = corners_of(near_h_[i]);
+      // (Written through a pointer: a push_back's capacity check a face.)
+      if (near_h_.size() < near_.size()) near_h_.resize(2 * near_.size());
+      H* const nh = near_h_.data();
+      for (std::size_t i = 0; i < near_.size(); ++i) nh[i] = face_halfedge(near_[i]);
+      for (std::size_t i = 0; i < near_.size(); ++i) near_corners_[i] = corners_of(nh[i]);
       for (const auto& v : near_corners_)
         for (const std::uint32_t c : v) {
           prefetch(pos_.address(c));
