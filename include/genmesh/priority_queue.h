@@ -244,13 +244,17 @@ class Mutable_priority_queue {
           m = _mm_min_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1)));
           const unsigned at = static_cast<unsigned>(_mm_movemask_ps(_mm_cmpeq_ps(lo, m))) |
                               static_cast<unsigned>(_mm_movemask_ps(_mm_cmpeq_ps(hi, m))) << 4;
-          std::size_t best = first + static_cast<std::size_t>(std::countr_zero(at));
-          if ((at & (at - 1)) == 0) [[likely]] return best;
-          for (unsigned rest = at & (at - 1); rest != 0; rest &= rest - 1) {
-            const std::size_t c = first + static_cast<std::size_t>(std::countr_zero(rest));
-            if (before(heap_[c], heap_[best])) best = c;
+          // No bit: a NaN priority made the minimum NaN in every lane (the
+          // selects below take NaN as they come, and never index past end).
+          if (at != 0) [[likely]] {
+            std::size_t best = first + static_cast<std::size_t>(std::countr_zero(at));
+            if ((at & (at - 1)) == 0) [[likely]] return best;
+            for (unsigned rest = at & (at - 1); rest != 0; rest &= rest - 1) {
+              const std::size_t c = first + static_cast<std::size_t>(std::countr_zero(rest));
+              if (before(heap_[c], heap_[best])) best = c;
+            }
+            return best;
           }
-          return best;
         }
       }
 #endif
