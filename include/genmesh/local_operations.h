@@ -333,18 +333,27 @@ std::optional<halfedge_descriptor_t<G>> split_edge_and_triangulate(halfedge_desc
 /// backends that find common neighbours natively): no isolated triangle on
 /// either side; when e = edge(pq) is inner, not both ends on the border, not
 /// an edge of a tetrahedron or of a two-triangle pillow.
-template <class G>
-bool link_condition_beyond_neighbours(halfedge_descriptor_t<G> pq, const G& g) {
+// both_ends_on_border(): whether p and q are both border vertices, asked
+// only when e is inner (a caller that has walked the ends passes what it
+// found).
+template <class G, class Both_ends_on_border>
+bool link_condition_beyond_neighbours(halfedge_descriptor_t<G> pq, const G& g,
+                                      const Both_ends_on_border& both_ends_on_border) {
   const auto qp = opposite(pq, g);
   const bool top = !border(pq, g), bottom = !border(qp, g);
   if (top && border(opposite(next(pq, g), g), g) && border(opposite(prev(pq, g), g), g)) return false;
   if (bottom && border(opposite(next(qp, g), g), g) && border(opposite(prev(qp, g), g), g)) return false;
   if (top && bottom) {
-    if (border_vertex(target(qp, g), g) && border_vertex(target(pq, g), g)) return false;
+    if (both_ends_on_border()) return false;
     if (tetrahedron_at(pq, g)) return false;
     if (next(pq, g) == opposite(prev(qp, g), g) && prev(pq, g) == opposite(next(qp, g), g)) return false;
   }
   return true;
+}
+template <class G>
+bool link_condition_beyond_neighbours(halfedge_descriptor_t<G> pq, const G& g) {
+  return link_condition_beyond_neighbours(
+      pq, g, [&] { return border_vertex(source(pq, g), g) && border_vertex(target(pq, g), g); });
 }
 
 /// The link condition of CGAL::Euler::does_satisfy_link_condition (Dey et
@@ -438,15 +447,7 @@ bool can_collapse_edge(edge_descriptor_t<G> e, const G& g) {
     }
     x = opposite(next(x, g), g);
   } while (x != qp);
-  // link_condition_beyond_neighbours, with the ends' border flags found above.
-  if (top && lo::border(opposite(next(pq, g), g), g) && lo::border(opposite(prev(pq, g), g), g)) return false;
-  if (bottom && lo::border(opposite(next(qp, g), g), g) && lo::border(opposite(prev(qp, g), g), g)) return false;
-  if (top && bottom) {
-    if (p_border && q_border) return false;
-    if (lo::tetrahedron_at(pq, g)) return false;
-    if (next(pq, g) == opposite(prev(qp, g), g) && prev(pq, g) == opposite(next(qp, g), g)) return false;
-  }
-  return true;
+  return lo::link_condition_beyond_neighbours(pq, g, [&] { return p_border && q_border; });
 }
 
 // collapse_edge's work without its test (below).
