@@ -296,6 +296,56 @@ TEST(PriorityQueue, NaNPrioritiesPopEveryKeyOnce) {
   }
 }
 
+// With set_near_size the heap holds only the smallest priorities and the
+// rest wait unordered (simplify keeps ~16k of its edges so): the same keys
+// pop in the same order as without, with ties, infinities, raised and
+// lowered priorities, erases and pushes across the band, and the far part
+// moved in each time the heap runs low (near sizes down to 1).
+TEST(PriorityQueue, NearSizePopsAsWithout) {
+  const float inf = std::numeric_limits<float>::infinity();
+  for (unsigned seed = 1; seed <= 12; ++seed) {
+    std::mt19937 rng(seed);
+    const std::size_t n = 200 + rng() % 4000;
+    std::vector<std::uint32_t> rank(n);
+    for (std::size_t k = 0; k < n; ++k) rank[k] = static_cast<std::uint32_t>(k);
+    std::shuffle(rank.begin(), rank.end(), rng);
+    using Q = genmesh::Mutable_priority_queue<float, Float_by_rank, std::uint32_t, 8>;
+    Q plain(n, Float_by_rank{&rank}), banded(n, Float_by_rank{&rank});
+    banded.set_near_size(std::size_t{1} << (seed % 7)); // 1 … 64
+    banded.reserve(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      if (rng() % 6 == 0) continue;
+      const float p = rng() % 50 == 0 ? inf : static_cast<float>(rng() % 64);
+      plain.push_unordered(k, p);
+      banded.push_unordered(k, p);
+    }
+    plain.heapify();
+    banded.heapify();
+    for (int s = 0; !plain.empty(); ++s) {
+      ASSERT_EQ(banded.size(), plain.size()) << "seed " << seed << " step " << s;
+      ASSERT_EQ(banded.top(), plain.top()) << "seed " << seed << " step " << s;
+      if (plain.size() >= 2) ASSERT_EQ(banded.second(), plain.second()) << "seed " << seed << " step " << s;
+      ASSERT_EQ(banded.pop(), plain.pop()) << "seed " << seed << " step " << s;
+      // Costs that grow as the pops go on, as a simplification's do.
+      for (int j = 0; j < (s < 3 * static_cast<int>(n) ? 5 : 0); ++j) {
+        const std::size_t k = rng() % n;
+        const float p = rng() % 40 == 0 ? inf : static_cast<float>(rng() % 64 + s / 16);
+        if (rng() % 4 == 0) {
+          plain.erase(k);
+          banded.erase(k);
+        } else {
+          plain.update(k, p);
+          banded.update(k, p);
+        }
+        ASSERT_EQ(banded.contains(k), plain.contains(k));
+        if (plain.contains(k)) ASSERT_EQ(banded.priority(k), plain.priority(k));
+      }
+    }
+    EXPECT_TRUE(banded.empty());
+    EXPECT_EQ(banded.size(), 0u);
+  }
+}
+
 // A queue filled with push_unordered and heapify() pops what one filled
 // with push() pops (simplify builds its first queue so), and takes updates
 // and erases afterwards.

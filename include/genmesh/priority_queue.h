@@ -20,7 +20,9 @@
 // array, a key → heap position array, moves instead of swaps while sifting;
 // where the priorities are floating point and the order refines <, the
 // smallest child is found without a branch per comparison; push_unordered
-// and heapify build a queue bottom-up).
+// and heapify build a queue bottom-up; set_near_size keeps only the smallest
+// priorities in the heap and the rest unordered beside it, in the same
+// storage, so that a big queue sifts within a heap that stays in cache).
 // Chosen by measurement against Boost.Heap's mutable heaps (d_ary_heap with
 // mutable_<true>, pairing_heap, fibonacci_heap) and CGAL's
 // Modifiable_priority_queue (its default boost::mutable_queue and its
@@ -37,8 +39,10 @@
 #include <genmesh/detail/prefetch.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cassert>
+#include <cmath>
 #include <concepts>
 #include <cstddef>
 #include <functional>
@@ -82,7 +86,24 @@ class Mutable_priority_queue {
   }
 
   /// Reserves room for n queued entries at once.
-  void reserve(std::size_t n) { heap_.reserve(n); }
+  void reserve(std::size_t n) {
+    if (n > heap_.size()) grow_slots(n);
+  }
+
+  /// With floating priorities ordered by < (Compare refines <, see
+  /// best_child): lets heapify() keep only about the n smallest priorities in
+  /// the heap and the others unordered beside it (the far part, in the same
+  /// storage), moved in, the next smallest few at a time, when the heap runs
+  /// low. A big queue whose costliest entries rarely pop then sifts within a
+  /// heap that stays in cache. The pops are the same (the order is total and
+  /// every far priority is at or above every heap priority), and so are the
+  /// costs of all the rest; only heapify() bands, and only when the queue is
+  /// well above n (0, the default: never). A NaN priority waits in the far
+  /// part until only NaN and infinite ones are left there.
+  void set_near_size(std::size_t n) {
+    static_assert(select_children, "set_near_size: floating priorities ordered by <");
+    near_size_ = n;
+  }
 
   /// The current key bound.
   std::size_t key_bound() const { return position_.size(); }
@@ -95,8 +116,13 @@ class Mutable_priority_queue {
   void push(std::size_t key, Priority p) {
     assert(!contains(key));
     if (key >= position_.size()) grow_for(key);
-    heap_.push_back(Entry{std::move(p), static_cast<Index>(key)});
-    sift_up(heap_.size() - 1);
+    if (banded_ && !(p < band_)) {
+      far_add(Entry{std::move(p), static_cast<Index>(key)});
+      if (near_ < 2) refill();
+      return;
+    }
+    near_push(Entry{std::move(p), static_cast<Index>(key)});
+    sift_up(near_ - 1);
   }
 
   /// Queues key with priority p without restoring the order: for filling
@@ -105,14 +131,41 @@ class Mutable_priority_queue {
   void push_unordered(std::size_t key, Priority p) {
     assert(!contains(key));
     if (key >= position_.size()) grow_for(key);
-    position_[key] = static_cast<Index>(heap_.size());
-    heap_.push_back(Entry{std::move(p), static_cast<Index>(key)});
+    if (banded_ && !(p < band_)) {
+      far_add(Entry{std::move(p), static_cast<Index>(key)});
+      if (near_ < 2) refill();
+    } else {
+      near_push(Entry{std::move(p), static_cast<Index>(key)});
+    }
   }
   /// Restores the order after push_unordered (Floyd's construction: O(n),
   /// sifting down from the last parent to the root). The pops that follow
   /// are the same as after push() (the order is total).
   void heapify() {
-    const std::size_t n = heap_.size();
+    if constexpr (select_children) {
+      if (near_size_ > 0 && !banded_ && near_ > 4 * near_size_) {
+        // A band: the entries at or above the sampled priority go far.
+        banded_ = true;
+        band_ = band_above(0, near_, near_size_);
+        if (banded_) {
+        std::size_t k = 0;
+        for (std::size_t i = 0; i < near_; ++i) {
+          if (!(heap_[i].priority < band_)) continue;
+          std::swap(heap_[i], heap_[k]);
+          ++k;
+        }
+        // heap_[k, near_) becomes the far part: moved to the storage's end.
+        std::size_t to = heap_.size();
+        for (std::size_t i = near_; i-- > k;) heap_[--to] = heap_[i];
+        far_ = to;
+        near_ = k;
+        for (std::size_t i = 0; i < near_; ++i) position_[heap_[i].key] = static_cast<Index>(i);
+        for (std::size_t i = far_; i < heap_.size(); ++i) position_[heap_[i].key] = static_cast<Index>(i);
+        if (near_ < 2) refill();
+        }
+      }
+    }
+    const std::size_t n = near_;
     if (n < 2) return;
     for (std::size_t i = (n - 2) / arity + 1; i-- > 0;) sift_down(i);
   }
@@ -125,6 +178,25 @@ class Mutable_priority_queue {
       return;
     }
     const std::size_t i = position_[key];
+    if (banded_) {
+      const bool near = p < band_;
+      if (i >= far_) {
+        if (!near) {
+          heap_[i].priority = std::move(p);
+          return;
+        }
+        far_remove(i, key);
+        near_push(Entry{std::move(p), static_cast<Index>(key)});
+        sift_up(near_ - 1);
+        return;
+      }
+      if (!near) {
+        remove_at(i);
+        far_add(Entry{std::move(p), static_cast<Index>(key)});
+        if (near_ < 2) refill();
+        return;
+      }
+    }
     heap_[i].priority = std::move(p);
     // Against the parent, not the old priority: with a keyed Compare the
     // order of an unchanged priority may have moved.
@@ -132,9 +204,15 @@ class Mutable_priority_queue {
   }
 
   /// Removes key; does nothing when key is not queued.
-  void erase(std::size_t key) {
+  [[gnu::always_inline]] void erase(std::size_t key) {
     if (!contains(key)) return;
-    remove_at(position_[key]);
+    const std::size_t i = position_[key];
+    if (banded_ && i >= far_) {
+      far_remove(i, key);
+      return;
+    }
+    remove_at(i);
+    if (banded_ && near_ < 2) refill();
   }
 
   /// The key with the smallest priority. Precondition: !empty().
@@ -146,7 +224,7 @@ class Mutable_priority_queue {
   /// (the smallest of the root's children). Precondition: size() >= 2.
   std::size_t second() const {
     assert(size() >= 2);
-    return heap_[best_child(1, std::min(arity + 1, heap_.size()))].key;
+    return heap_[best_child(1, std::min(arity + 1, near_))].key;
   }
   /// Its priority. Precondition: !empty().
   const Priority& top_priority() const {
@@ -164,11 +242,12 @@ class Mutable_priority_queue {
     assert(!empty());
     const std::size_t key = heap_.front().key;
     remove_at(0);
+    if (banded_ && near_ < 2) refill();
     return key;
   }
 
-  bool empty() const { return heap_.empty(); }
-  std::size_t size() const { return heap_.size(); }
+  bool empty() const { return near_ == 0; } // the far part is empty too then
+  std::size_t size() const { return near_ + (heap_.size() - far_); }
 
   /// Hints that key's position will be read soon (a cache prefetch; no
   /// effect on the queue). With prefetch_entry (its entry, once the
@@ -183,8 +262,11 @@ class Mutable_priority_queue {
 
   /// Empties the queue, keeping the key bound and the storage.
   void clear() {
-    for (const Entry& e : heap_) position_[e.key] = absent;
-    heap_.clear();
+    for (std::size_t i = 0; i < near_; ++i) position_[heap_[i].key] = absent;
+    for (std::size_t i = far_; i < heap_.size(); ++i) position_[heap_[i].key] = absent;
+    near_ = 0;
+    far_ = heap_.size();
+    banded_ = false;
   }
 
  private:
@@ -289,14 +371,99 @@ class Mutable_priority_queue {
 
   void remove_at(std::size_t i) {
     position_[heap_[i].key] = absent;
-    const std::size_t last = heap_.size() - 1;
+    const std::size_t last = --near_;
     if (i != last) {
       heap_[i] = std::move(heap_[last]);
-      heap_.pop_back();
       position_[heap_[i].key] = static_cast<Index>(i);
       restore(i);
-    } else {
-      heap_.pop_back();
+    }
+  }
+
+  // Storage of n slots (n > heap_.size()), the far part kept at its end.
+  [[gnu::noinline]] void grow_slots(std::size_t n) {
+    const std::size_t old = heap_.size(), far = old - far_;
+    heap_.resize(n);
+    for (std::size_t i = 0; i < far; ++i) {
+      heap_[n - 1 - i] = std::move(heap_[old - 1 - i]);
+      position_[heap_[n - 1 - i].key] = static_cast<Index>(n - 1 - i);
+    }
+    far_ = n - far;
+  }
+  void near_push(Entry e) {
+    if (near_ == far_) grow_slots(std::max<std::size_t>(16, 2 * heap_.size()));
+    position_[e.key] = static_cast<Index>(near_);
+    heap_[near_++] = std::move(e);
+  }
+  void far_add(Entry e) {
+    if (near_ == far_) grow_slots(std::max<std::size_t>(16, 2 * heap_.size()));
+    position_[e.key] = static_cast<Index>(--far_);
+    heap_[far_] = std::move(e);
+  }
+  // Takes the far entry of `key` out of slot i (key given: reading it from
+  // the slot was a cache miss the removal waited for).
+  void far_remove(std::size_t i, std::size_t key) {
+    position_[key] = absent;
+    if (i != far_) {
+      heap_[i] = std::move(heap_[far_]);
+      position_[heap_[i].key] = static_cast<Index>(i);
+    }
+    ++far_;
+  }
+
+  // A band for the entries heap_[first, end): a priority about `want` of
+  // them are below (from a sample), made a bound that at least one is below.
+  // Clears banded_ instead where the sample's is not finite (only NaN and
+  // infinite priorities left, or nearly).
+  Priority band_above(std::size_t first, std::size_t end, std::size_t want) {
+    constexpr std::size_t samples = 256;
+    const std::size_t n = end - first, step = std::max<std::size_t>(1, n / samples);
+    std::array<Priority, samples> s;
+    std::size_t m = 0;
+    for (std::size_t i = first; i < end && m < samples; i += step) s[m++] = heap_[i].priority;
+    const std::size_t r = std::min(m - 1, want * m / n);
+    std::nth_element(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(r), s.begin() + static_cast<std::ptrdiff_t>(m),
+                     [](Priority a, Priority b) { return a < b || (a == a && b != b); }); // NaN last
+    const Priority b = s[r];
+    if (!std::isfinite(b)) {
+      banded_ = false;
+      return b;
+    }
+    return std::nextafter(b, std::numeric_limits<Priority>::infinity());
+  }
+
+  // Moves the far entries below a new band into the heap (which holds fewer
+  // than two), until it holds two or the far part is empty; heap_ then
+  // ordered again.
+  [[gnu::noinline]] void refill() {
+    while (near_ < 2 && far_ < heap_.size()) {
+      const std::size_t end = heap_.size();
+      band_ = band_above(far_, end, near_size_);
+      // Moved down to the heap's end (never above their slots: near_ <= far_).
+      auto take = [&](std::size_t i) {
+        position_[heap_[i].key] = static_cast<Index>(near_);
+        heap_[near_++] = std::move(heap_[i]);
+      };
+      if (!banded_) {
+        for (std::size_t i = far_; i < end; ++i) take(i);
+        far_ = end;
+      } else {
+        // The far entries below the band gathered at the far part's start
+        // (in order of the slots), then moved down to the heap's end.
+        std::size_t k = far_;
+        for (std::size_t i = far_; i < end; ++i) {
+          if (!(heap_[i].priority < band_)) continue;
+          if (i != k) {
+            std::swap(heap_[i], heap_[k]);
+            position_[heap_[i].key] = static_cast<Index>(i);
+          }
+          ++k;
+        }
+        for (std::size_t i = far_; i < k; ++i) take(i);
+        far_ = k;
+      }
+      const std::size_t n = near_;
+      if (n >= 2)
+        for (std::size_t i = (n - 2) / arity + 1; i-- > 0;) sift_down(i);
     }
   }
 
@@ -322,7 +489,7 @@ class Mutable_priority_queue {
   }
 
   void sift_down(std::size_t i) {
-    const std::size_t n = heap_.size();
+    const std::size_t n = near_;
     Entry moving = std::move(heap_[i]);
     for (;;) {
       const std::size_t first = i * arity + 1;
@@ -338,8 +505,15 @@ class Mutable_priority_queue {
   }
 
   [[no_unique_address]] Compare compare_;
+  // heap_[0, near_) is the heap; with a band, heap_[far_, heap_.size()) the
+  // far entries, unordered (far_ >= near_; the slots between are free).
+  // A far entry's position is its slot, so position_[key] >= far_ tells it.
   std::vector<Entry> heap_;
-  std::vector<Index> position_;  // key → index in heap_, or absent
+  std::vector<Index> position_;  // key → slot in heap_, or absent
+  std::size_t near_ = 0, far_ = 0;
+  std::size_t near_size_ = 0; // set_near_size's n; 0: no band
+  bool banded_ = false;
+  Priority band_{}; // with banded_: the heap holds the priorities below it, the far part the others
 };
 
 } // namespace genmesh

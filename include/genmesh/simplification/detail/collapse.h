@@ -567,6 +567,10 @@ class Collapser {
     if (passes_) return;
     queue_ = Queue(eb, Order{this});
     queue_.reserve(eb);
+    // The heap keeps the cheapest ~16k edges (128 KB, in L2), the rest wait
+    // unordered (a sift in the whole heap was a cache miss a level below the
+    // top few: 832k guard=0 0.87 → 0.75 s; none below ~44k faces).
+    queue_.set_near_size(std::size_t{1} << 14);
     Placement pl;
     // The ends' points and data of the edge `lag` places ahead asked for
     // (each a miss otherwise).
