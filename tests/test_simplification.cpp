@@ -1431,6 +1431,21 @@ TEST(FaceGrid, VectorWalkEqualsScalarWalk) {
       ASSERT_EQ(vector[i].z, scalar[i].z);
     }
 #endif
+#if defined(GENMESH_GRID_SELECT_AVX512)
+    if (ds::grid_select_has_avx512()) {
+      std::fill(vector.begin(), vector.end(), ds::Grid_entry{});
+      ASSERT_EQ(ds::grid_select_avx512(entries.data(), n, probe, vector.data()), k);
+      for (std::size_t i = 0; i < k; ++i) {
+        ASSERT_EQ(vector[i].face, scalar[i].face);
+        ASSERT_EQ(vector[i].flags, scalar[i].flags);
+        ASSERT_EQ(vector[i].x, scalar[i].x);
+        ASSERT_EQ(vector[i].y, scalar[i].y);
+        ASSERT_EQ(vector[i].z, scalar[i].z);
+      }
+      // Nothing written past the entries picked.
+      for (std::size_t i = k; i < vector.size(); ++i) ASSERT_EQ(vector[i].face, 0u);
+    }
+#endif
   }
 }
 
