@@ -220,6 +220,29 @@ inline std::size_t grid_select_sse2(const Grid_entry* e, std::size_t n, const Gr
   }
   return k;
 }
+// Keeps the entries of [e, e + n) whose version (version[face] but its
+// `hidden` bit 0x40; read as grid_select_current_avx512 does) is theirs,
+// in order, at the front; returns how many. Face_grid::drop_stale's loop,
+// eight entries at a time.
+[[gnu::target("avx512f")]] inline std::size_t grid_drop_stale_avx512(Grid_entry* e, std::size_t n,
+                                                                    const std::uint8_t* version) {
+  const __m512i face = _mm512_set1_epi64(0xffffffff), shown = _mm512_set1_epi64(0xbf),
+                five = _mm512_set1_epi64(31);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < n; i += 8) {
+    const __mmask8 in = n - i >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << (n - i)) - 1);
+    const __m512i v = _mm512_maskz_loadu_epi64(in, e + i);
+    const __m512i ver =
+        _mm512_and_si512(_mm512_mask_i64gather_epi64(_mm512_setzero_si512(), in, _mm512_and_si512(v, face), version, 1), shown);
+    const __mmask8 live = _mm512_mask_cmpeq_epi64_mask(in, ver, _mm512_and_si512(_mm512_maskz_srli_epi64(0xff, v, 35), five));
+    const unsigned c = static_cast<unsigned>(__builtin_popcount(live));
+    // (Written at or below the eight just read.)
+    _mm512_mask_storeu_epi64(e + kept, static_cast<__mmask8>((1u << c) - 1), _mm512_maskz_compress_epi64(live, v));
+    kept += c;
+  }
+  return kept;
+}
+
 inline bool grid_select_has_avx512() {
   static const bool has = __builtin_cpu_supports("avx512f");
   return has;
@@ -303,7 +326,10 @@ class Face_grid {
     inv_ = cell > 0 ? 1.0 / cell : 1.0;
     table_ = {};
     used_ = 0;
-    version_.assign(faces, 0);
+    // (Seven bytes more: the vector walk reads a face's version as the
+    // first byte of an 8-byte word; never written.)
+    faces_ = faces;
+    version_.assign(faces + 7, 0);
     version_.shrink_to_fit();
     // Grown at load 1/2 from a small table: a cell lists about 80 faces at
     // the first build (832k armadillo: 15k cells), so a table sized from the
@@ -375,7 +401,7 @@ class Face_grid {
   void read_ahead(bool on) { read_ahead_ = on; }
 
   // The face indices the grid was reset for.
-  std::size_t face_bound() const { return version_.size(); }
+  std::size_t face_bound() const { return faces_; }
 
   // Appends to `out` every face (but the hidden ones) listed in a cell b overlaps whose box's
   // part in that cell may meet b's, each face once (in the cell holding the
@@ -475,6 +501,14 @@ class Face_grid {
   }
 
   void drop_stale(Bucket& c) const {
+#if defined(GENMESH_GRID_SELECT_AVX512)
+    if (grid_select_has_avx512()) {
+      const std::size_t kept = grid_drop_stale_avx512(c.list.data(), c.list.size(), version_.data());
+      c.list.resize(kept);
+      c.clean = static_cast<std::uint32_t>(kept);
+      return;
+    }
+#endif
     // Without a branch on the version test, which goes either way.
     std::size_t kept = 0;
     for (std::size_t i = 0; i < c.list.size(); ++i) {
@@ -631,7 +665,8 @@ class Face_grid {
   double inv_ = 1.0;
   std::vector<Bucket> table_;
   std::size_t used_ = 0;
-  std::vector<std::uint8_t> version_; // per face, 5 bits
+  std::vector<std::uint8_t> version_; // per face, 5 bits (and 7 bytes of padding)
+  std::size_t faces_ = 0;             // the face indices the grid was reset for
   std::vector<Entry> hits_;           // query()'s
   std::vector<std::uint32_t> found_;  // query()'s: the current hits' faces
   bool read_ahead_ = true;
