@@ -1431,7 +1431,65 @@ TEST(FaceGrid, VectorWalkEqualsScalarWalk) {
       ASSERT_EQ(vector[i].z, scalar[i].z);
     }
 #endif
+#if defined(GENMESH_GRID_SELECT_AVX512)
+    if (ds::grid_select_has_avx512()) {
+      std::fill(vector.begin(), vector.end(), ds::Grid_entry{});
+      ASSERT_EQ(ds::grid_select_avx512(entries.data(), n, probe, vector.data()), k);
+      for (std::size_t i = 0; i < k; ++i) {
+        ASSERT_EQ(vector[i].face, scalar[i].face);
+        ASSERT_EQ(vector[i].flags, scalar[i].flags);
+        ASSERT_EQ(vector[i].x, scalar[i].x);
+        ASSERT_EQ(vector[i].y, scalar[i].y);
+        ASSERT_EQ(vector[i].z, scalar[i].z);
+      }
+      // Nothing written past the entries picked.
+      for (std::size_t i = k; i < vector.size(); ++i) ASSERT_EQ(vector[i].face, 0u);
+    }
+#endif
   }
+}
+
+// grid_drop_stale_avx512 (Face_grid::drop_stale eight entries at a time,
+// the versions gathered) keeps, in order, exactly the entries whose
+// version is their face's (its hidden bit ignored): at random, for every
+// count, the versions read from an array with the seven bytes of padding
+// Face_grid keeps.
+TEST(FaceGrid, VectorDropKeepsTheLiveEntries) {
+#if defined(GENMESH_GRID_SELECT_AVX512)
+  namespace ds = genmesh::detail::simplification;
+  if (!ds::grid_select_has_avx512()) GTEST_SKIP() << "no AVX-512";
+  Xorshift64 next{0x9E3779B97F4A7C15ull};
+  const std::size_t faces = 37;
+  std::vector<std::uint8_t> version(faces + 7, 0xff);
+  std::vector<ds::Grid_entry> entries(64), expected(64);
+  for (int round = 0; round < 2000; ++round) {
+    for (std::size_t f = 0; f < faces; ++f) {
+      const std::uint64_t r = next();
+      // Mostly 0-3 (entries match often); hidden (0x40) or gone (0x80) at times.
+      version[f] = static_cast<std::uint8_t>((r & 3) | ((r >> 8) % 5 == 0 ? 0x40 : 0) | ((r >> 16) % 11 == 0 ? 0x80 : 0));
+    }
+    const std::size_t n = static_cast<std::size_t>(round % 61);
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint64_t r = next();
+      const auto face = static_cast<std::uint32_t>(r % faces);
+      const auto flags = static_cast<std::uint8_t>(((r >> 8) & 3) << 3 | ((r >> 12) & 7));
+      entries[i] = {face, flags, static_cast<std::uint8_t>(r >> 16), static_cast<std::uint8_t>(r >> 24),
+                    static_cast<std::uint8_t>(r >> 32)};
+      if ((version[face] & ~0x40) == flags >> 3) expected[k++] = entries[i];
+    }
+    ASSERT_EQ(ds::grid_drop_stale_avx512(entries.data(), n, version.data()), k);
+    for (std::size_t i = 0; i < k; ++i) {
+      ASSERT_EQ(entries[i].face, expected[i].face);
+      ASSERT_EQ(entries[i].flags, expected[i].flags);
+      ASSERT_EQ(entries[i].x, expected[i].x);
+      ASSERT_EQ(entries[i].y, expected[i].y);
+      ASSERT_EQ(entries[i].z, expected[i].z);
+    }
+  }
+#else
+  GTEST_SKIP() << "no AVX-512 path";
+#endif
 }
 
 // Box_set::meets (two boxes at a time where SSE2 is there) says of each of
