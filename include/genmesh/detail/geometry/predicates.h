@@ -15,6 +15,22 @@
 // at most): no allocation, no overflow, no underflow.
 #pragma once
 
+// The filters' error bounds and two_sum hold for IEEE double arithmetic as
+// written; a multiply-add the compiler fuses only leaves out a product's
+// rounding, which the bounds allow for, so the signs stay exact with
+// -ffp-contract=fast (tests/test_flags.cpp). -ffast-math
+// breaks them: reassociation turns two_sum's error term into 0 and moves
+// roundings the bounds count, and finite-math-only folds the tests for NaN
+// and infinity that predicates and placements rely on. geometry.h, and so
+// every algorithm's header, includes this one. (README "Compiler flags".)
+#if defined(__FAST_MATH__) || defined(_M_FP_FAST)
+#error "genmesh needs IEEE floating point: -ffast-math (/fp:fast) is not supported (exact predicates, deterministic results; README \"Compiler flags\")"
+#elif defined(__ASSOCIATIVE_MATH__)
+#error "genmesh needs IEEE floating point: -fassociative-math (-funsafe-math-optimizations) is not supported: it breaks the exact predicates' error-free sums (README \"Compiler flags\")"
+#elif defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
+#error "genmesh needs IEEE floating point: -ffinite-math-only is not supported: genmesh tests for NaN and infinity (README \"Compiler flags\")"
+#endif
+
 #include <Eigen/Core>
 
 #include <algorithm>
