@@ -324,7 +324,9 @@ TEST(PriorityQueue, NearSizePopsAsWithout) {
     for (int s = 0; !plain.empty(); ++s) {
       ASSERT_EQ(banded.size(), plain.size()) << "seed " << seed << " step " << s;
       ASSERT_EQ(banded.top(), plain.top()) << "seed " << seed << " step " << s;
-      if (plain.size() >= 2) ASSERT_EQ(banded.second(), plain.second()) << "seed " << seed << " step " << s;
+      if (plain.size() >= 2) {
+        ASSERT_EQ(banded.second(), plain.second()) << "seed " << seed << " step " << s;
+      }
       ASSERT_EQ(banded.pop(), plain.pop()) << "seed " << seed << " step " << s;
       // Costs that grow as the pops go on, as a simplification's do.
       for (int j = 0; j < (s < 3 * static_cast<int>(n) ? 5 : 0); ++j) {
@@ -338,7 +340,9 @@ TEST(PriorityQueue, NearSizePopsAsWithout) {
           banded.update(k, p);
         }
         ASSERT_EQ(banded.contains(k), plain.contains(k));
-        if (plain.contains(k)) ASSERT_EQ(banded.priority(k), plain.priority(k));
+        if (plain.contains(k)) {
+          ASSERT_EQ(banded.priority(k), plain.priority(k));
+        }
       }
     }
     EXPECT_TRUE(banded.empty());
@@ -411,6 +415,37 @@ TEST(PriorityQueue, UpdateEraseGrowClear) {
   EXPECT_EQ(q.key_bound(), 1000u);
   q.push(5, 2);  // usable after clear
   EXPECT_EQ(q.pop(), 5u);
+}
+
+// A priority that is a class (no default constructor, no std::isfinite):
+// the queue needs only its order and moves. (set_near_size's far part, for
+// floating priorities only, must not ask more of other types.)
+namespace {
+struct Cost_and_tag {
+  Cost_and_tag(double c, int t) : cost(c), tag(t) {}
+  double cost;
+  int tag;
+  friend bool operator<(const Cost_and_tag& a, const Cost_and_tag& b) {
+    return a.cost < b.cost || (a.cost == b.cost && a.tag < b.tag);
+  }
+};
+} // namespace
+
+TEST(PriorityQueue, ClassPrioritiesWithoutDefaultConstructor) {
+  static_assert(!std::is_default_constructible_v<Cost_and_tag>);
+  genmesh::Mutable_priority_queue<Cost_and_tag> q(8);
+  q.reserve(8);
+  for (int k = 0; k < 8; ++k) q.push(static_cast<std::size_t>(k), Cost_and_tag{static_cast<double>(k % 3), -k});
+  q.update(7, Cost_and_tag{-1.0, 0});
+  q.erase(0);
+  std::vector<std::size_t> order;
+  while (!q.empty()) order.push_back(q.pop());
+  // 7 (lowered), then cost 0: 6, 3; cost 1: 4, 1; cost 2: 5, 2 (tag −k: larger k first).
+  EXPECT_EQ(order, (std::vector<std::size_t>{7, 6, 3, 4, 1, 5, 2}));
+  q.push(2, Cost_and_tag{0.5, 0});
+  q.clear();
+  EXPECT_TRUE(q.empty());
+  EXPECT_EQ(q.size(), 0u);
 }
 
 // No allocation per operation: once the heap reached its largest size, the

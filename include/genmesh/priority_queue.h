@@ -87,7 +87,11 @@ class Mutable_priority_queue {
 
   /// Reserves room for n queued entries at once.
   void reserve(std::size_t n) {
-    if (n > heap_.size()) grow_slots(n);
+    if constexpr (select_children) {
+      if (n > heap_.size()) grow_slots(n);
+    } else {
+      heap_.reserve(n);
+    }
   }
 
   /// With floating priorities ordered by < (Compare refines <, see
@@ -116,10 +120,12 @@ class Mutable_priority_queue {
   void push(std::size_t key, Priority p) {
     assert(!contains(key));
     if (key >= position_.size()) grow_for(key);
-    if (banded_ && !(p < band_)) {
-      far_add(Entry{std::move(p), static_cast<Index>(key)});
-      if (near_ < 2) refill();
-      return;
+    if constexpr (select_children) {
+      if (banded_ && !(p < band_)) {
+        far_add(Entry{std::move(p), static_cast<Index>(key)});
+        if (near_ < 2) refill();
+        return;
+      }
     }
     near_push(Entry{std::move(p), static_cast<Index>(key)});
     sift_up(near_ - 1);
@@ -131,12 +137,14 @@ class Mutable_priority_queue {
   void push_unordered(std::size_t key, Priority p) {
     assert(!contains(key));
     if (key >= position_.size()) grow_for(key);
-    if (banded_ && !(p < band_)) {
-      far_add(Entry{std::move(p), static_cast<Index>(key)});
-      if (near_ < 2) refill();
-    } else {
-      near_push(Entry{std::move(p), static_cast<Index>(key)});
+    if constexpr (select_children) {
+      if (banded_ && !(p < band_)) {
+        far_add(Entry{std::move(p), static_cast<Index>(key)});
+        if (near_ < 2) refill();
+        return;
+      }
     }
+    near_push(Entry{std::move(p), static_cast<Index>(key)});
   }
   /// Restores the order after push_unordered (Floyd's construction: O(n),
   /// sifting down from the last parent to the root). The pops that follow
@@ -178,7 +186,8 @@ class Mutable_priority_queue {
       return;
     }
     const std::size_t i = position_[key];
-    if (banded_) {
+    if constexpr (select_children) {
+     if (banded_) {
       const bool near = p < band_;
       if (i >= far_) {
         if (!near) {
@@ -196,6 +205,7 @@ class Mutable_priority_queue {
         if (near_ < 2) refill();
         return;
       }
+     }
     }
     heap_[i].priority = std::move(p);
     // Against the parent, not the old priority: with a keyed Compare the
@@ -207,12 +217,15 @@ class Mutable_priority_queue {
   [[gnu::always_inline]] void erase(std::size_t key) {
     if (!contains(key)) return;
     const std::size_t i = position_[key];
-    if (banded_ && i >= far_) {
-      far_remove(i, key);
-      return;
+    if constexpr (select_children) {
+      if (banded_ && i >= far_) {
+        far_remove(i, key);
+        return;
+      }
     }
     remove_at(i);
-    if (banded_ && near_ < 2) refill();
+    if constexpr (select_children)
+      if (banded_ && near_ < 2) refill();
   }
 
   /// The key with the smallest priority. Precondition: !empty().
@@ -242,7 +255,8 @@ class Mutable_priority_queue {
     assert(!empty());
     const std::size_t key = heap_.front().key;
     remove_at(0);
-    if (banded_ && near_ < 2) refill();
+    if constexpr (select_children)
+      if (banded_ && near_ < 2) refill();
     return key;
   }
 
@@ -265,6 +279,7 @@ class Mutable_priority_queue {
     for (std::size_t i = 0; i < near_; ++i) position_[heap_[i].key] = absent;
     for (std::size_t i = far_; i < heap_.size(); ++i) position_[heap_[i].key] = absent;
     near_ = 0;
+    if constexpr (!select_children) heap_.clear();
     far_ = heap_.size();
     banded_ = false;
   }
@@ -375,8 +390,12 @@ class Mutable_priority_queue {
     if (i != last) {
       heap_[i] = std::move(heap_[last]);
       position_[heap_[i].key] = static_cast<Index>(i);
-      restore(i);
     }
+    if constexpr (!select_children) { // no far part: the storage is the heap
+      heap_.pop_back();
+      far_ = near_;
+    }
+    if (i != last) restore(i);
   }
 
   // Storage of n slots (n > heap_.size()), the far part kept at its end.
@@ -390,9 +409,14 @@ class Mutable_priority_queue {
     far_ = n - far;
   }
   void near_push(Entry e) {
-    if (near_ == far_) grow_slots(std::max<std::size_t>(16, 2 * heap_.size()));
     position_[e.key] = static_cast<Index>(near_);
-    heap_[near_++] = std::move(e);
+    if constexpr (select_children) {
+      if (near_ == far_) grow_slots(std::max<std::size_t>(16, 2 * heap_.size()));
+      heap_[near_++] = std::move(e);
+    } else { // no far part: the storage is the heap (Priority need not be default-constructible)
+      heap_.push_back(std::move(e));
+      far_ = ++near_;
+    }
   }
   void far_add(Entry e) {
     if (near_ == far_) grow_slots(std::max<std::size_t>(16, 2 * heap_.size()));
@@ -513,7 +537,7 @@ class Mutable_priority_queue {
   std::size_t near_ = 0, far_ = 0;
   std::size_t near_size_ = 0; // set_near_size's n; 0: no band
   bool banded_ = false;
-  Priority band_{}; // with banded_: the heap holds the priorities below it, the far part the others
+  std::conditional_t<select_children, Priority, bool> band_{}; // with banded_: the heap holds the priorities below it, the far part the others
 };
 
 } // namespace genmesh
