@@ -221,9 +221,12 @@ inline std::size_t grid_select_sse2(const Grid_entry* e, std::size_t n, const Gr
   return k;
 }
 // Keeps the entries of [e, e + n) whose version (version[face] but its
-// `hidden` bit 0x40; read as grid_select_current_avx512 does) is theirs,
-// in order, at the front; returns how many. Face_grid::drop_stale's loop,
-// eight entries at a time.
+// `hidden` bit 0x40) is theirs, in order, at the front; returns how many.
+// Face_grid::drop_stale's loop, eight entries at a time: the versions
+// gathered, each the low byte of the 8-byte word at version + face (the
+// grid keeps seven bytes after the last face's). (Session 19, with the
+// select above: 832k armadillo → 10 %, guarded, Halfedge_mesh: ~2-3 %
+// faster; shark → 10 %, Surface_mesh: ~2 %.)
 [[gnu::target("avx512f")]] inline std::size_t grid_drop_stale_avx512(Grid_entry* e, std::size_t n,
                                                                     const std::uint8_t* version) {
   const __m512i face = _mm512_set1_epi64(0xffffffff), shown = _mm512_set1_epi64(0xbf),
