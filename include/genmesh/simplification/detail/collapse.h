@@ -511,7 +511,10 @@ class Collapser {
       std::size_t read_n = 0, done = 0;
       for (; lead != end && read_n < lag; ++lead) ahead[read_n++ % lag] = read(*lead);
       while (done < read_n) {
-        const auto [a, b, c] = ahead[done % lag];
+        // (Not a structured binding: Clang before 16 refuses one named in
+        // the requires-expression below.)
+        const std::array<std::size_t, 3> abc = ahead[done % lag];
+        const std::size_t a = abc[0], b = abc[1], c = abc[2];
         if (lead != end) {
           ahead[read_n++ % lag] = read(*lead); // into the slot just taken
           ++lead;
