@@ -651,8 +651,8 @@ protected:
   }
 
   detail::Halfedge_links hlinks_;
-  std::vector<Halfedge_index> vhalfedge_;
-  std::vector<Halfedge_index> fhalfedge_;
+  detail::huge_page_vector<Halfedge_index> vhalfedge_; // big ones on huge pages (memory/huge_pages.h)
+  detail::huge_page_vector<Halfedge_index> fhalfedge_;
   std::vector<bool> vremoved_, eremoved_, fremoved_;
   std::size_t removed_vertices_ = 0, removed_edges_ = 0, removed_faces_ = 0;
   std::uint32_t vertices_freelist_ = invalid, edges_freelist_ = invalid, faces_freelist_ = invalid;

@@ -78,6 +78,7 @@
 #include <genmesh/concepts.h>
 #include <genmesh/detail/elements/compaction.h>
 #include <genmesh/detail/elements/mesh_functions.h>
+#include <genmesh/detail/memory/huge_pages.h>
 #include <genmesh/elements.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/mesh_properties.h>
@@ -533,7 +534,7 @@ struct Incidence_point_map {
   using value_type = P;
   using reference = P&;
   using category = boost::lvalue_property_map_tag;
-  std::vector<P>* points = nullptr;
+  detail::huge_page_vector<P>* points = nullptr;
   P& operator[](Vertex_index v) const { return (*points)[v.idx()]; }
   friend P& get(const Incidence_point_map& m, Vertex_index v) { return m[v]; }
   friend void put(const Incidence_point_map& m, Vertex_index v, const P& p) { m[v] = p; }
@@ -1168,7 +1169,7 @@ public:
   /// The positions as a boost lvalue property map (valid while the mesh
   /// lives and is not moved from).
   [[nodiscard]] Incidence_point_map<P> points() const {
-    return {const_cast<std::vector<P>*>(&points_)};
+    return {const_cast<detail::huge_page_vector<P>*>(&points_)};
   }
   /// The positions as one array by vertex index (removed vertices' slots
   /// included), valid until a vertex is added or the garbage is collected.
@@ -1256,7 +1257,7 @@ public:
   /// as before; a valid manifold result with distinct corners per face.
   void relink(std::size_t nv, const std::vector<std::uint32_t>& ends, const std::vector<std::uint32_t>& offsets,
               const std::vector<std::uint32_t>& sides) {
-    std::vector<P> pts = std::move(points_);
+    detail::huge_page_vector<P> pts = std::move(points_);
     pts.resize(nv, detail::default_point<P>());
     std::vector<std::uint32_t> corner_edge(sides.size());
     std::vector<signed char> corner_sign(sides.size());
@@ -1586,7 +1587,7 @@ private:
       throw invalid_input("Incidence_mesh: too many elements");
   }
 
-  std::vector<P> points_;
+  detail::huge_page_vector<P> points_; // big ones on huge pages (memory/huge_pages.h)
   detail::Incidence_rows d0_{2};  // E × V, rows homed (two ends)
   detail::Incidence_rows d0t_;    // V × E
   detail::Incidence_rows d1_{4};  // F × E, rows homed while faces have at most 4 sides

@@ -36,6 +36,7 @@
 // command in docs/benchmarks.md, "Mutable priority queue").
 #pragma once
 
+#include <genmesh/detail/memory/huge_pages.h>
 #include <genmesh/detail/prefetch.h>
 
 #include <algorithm>
@@ -532,8 +533,8 @@ class Mutable_priority_queue {
   // heap_[0, near_) is the heap; with a band, heap_[far_, heap_.size()) the
   // far entries, unordered (far_ >= near_; the slots between are free).
   // A far entry's position is its slot, so position_[key] >= far_ tells it.
-  std::vector<Entry> heap_;
-  std::vector<Index> position_;  // key → slot in heap_, or absent
+  detail::huge_page_vector<Entry> heap_; // big ones on huge pages (memory/huge_pages.h)
+  detail::huge_page_vector<Index> position_;  // key → slot in heap_, or absent
   std::size_t near_ = 0, far_ = 0;
   std::size_t near_size_ = 0; // set_near_size's n; 0: no band
   bool banded_ = false;

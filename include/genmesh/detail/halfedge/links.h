@@ -2,6 +2,7 @@
 // (used through <genmesh/halfedge_mesh.h>).
 #pragma once
 
+#include <genmesh/detail/memory/huge_pages.h>
 #include <genmesh/detail/prefetch.h>
 #include <genmesh/elements.h>
 
@@ -134,6 +135,8 @@ private:
     // new std::byte[] is suitably aligned and provides storage for the
     // (implicit-lifetime, trivially copyable) index objects.
     buf_.reset(new std::byte[bytes_per_halfedge * cap]);
+    // The guard's near-face reads land here at random (memory/huge_pages.h).
+    advise_huge_pages(buf_.get(), bytes_per_halfedge * cap);
     next_ = reinterpret_cast<Halfedge_index*>(buf_.get());
     target_ = reinterpret_cast<Vertex_index*>(buf_.get() + sizeof(Halfedge_index) * cap);
     rec_ = reinterpret_cast<Record*>(buf_.get() + (sizeof(Halfedge_index) + sizeof(Vertex_index)) * cap);

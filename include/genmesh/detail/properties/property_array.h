@@ -13,6 +13,7 @@
 #pragma once
 
 #include <genmesh/detail/elements/compaction.h>
+#include <genmesh/detail/memory/huge_pages.h>
 
 #include <boost/property_map/property_map.hpp>
 
@@ -120,12 +121,12 @@ public:
   [[nodiscard]] std::size_t size() const { return data_.size(); }
   [[nodiscard]] const T& default_value() const { return default_; }
   /// The raw storage (for T = bool its elements are Bool_box).
-  std::vector<Storage>& storage() { return data_; }
-  const std::vector<Storage>& storage() const { return data_; }
+  huge_page_vector<Storage>& storage() { return data_; }
+  const huge_page_vector<Storage>& storage() const { return data_; }
 
 private:
   T default_;
-  std::vector<Storage> data_;
+  huge_page_vector<Storage> data_; // points: huge pages (memory/huge_pages.h)
 };
 
 /// A typed handle to one property array, indexed by Key (an index type with

@@ -34,6 +34,7 @@
 
 #include <genmesh/concepts.h>
 #include <genmesh/detail/geometry/predicates.h>
+#include <genmesh/detail/memory/huge_pages.h>
 #include <genmesh/detail/prefetch.h>
 #include <genmesh/exceptions.h>
 #include <genmesh/features.h>
@@ -2383,7 +2384,7 @@ class Collapser {
   // The points by vertex index: the mesh's own array, or a copy in double
   // where the mesh has none (genmesh::detail::Point_reader).
   genmesh::detail::Point_reader<G> pos_;
-  std::vector<Stored> data_;
+  genmesh::detail::huge_page_vector<Stored> data_; // per vertex; big ones on huge pages (memory/huge_pages.h)
   // Schedule::passes: per pass, the candidate edges (float cost bits « 32 |
   // edge index, ties then ordered by vertex-index pair) and the vertices a
   // collapse of the pass touched.
@@ -2398,7 +2399,7 @@ class Collapser {
     static constexpr float above = -2.0f; // beyond .max_error
     static constexpr float dirty = -3.0f; // to compute (in a pass: gone or changed, skip)
   };
-  std::vector<float> ecost_;
+  genmesh::detail::huge_page_vector<float> ecost_;
   std::vector<std::uint8_t> touched_;
   double last_cost_ = 0; // of the last collapse() that got as far as the placement
   // The queue's error bound (a distance), and whether collapse() stopped at it.
@@ -2425,7 +2426,7 @@ class Collapser {
   // held the corners (10 MB at 832k faces), for one read a face instead of
   // the mesh's few.
   static constexpr bool native_faces = HasNativeDescriptorOfIndex<G, face_index_t>;
-  std::vector<H> face_h_;
+  genmesh::detail::huge_page_vector<H> face_h_;
   std::vector<std::array<std::uint32_t, 3>> near_corners_; // near_'s faces not around p or q (corners)
   std::vector<Mesh_triangle<std::uint32_t>> fresh_;
   std::vector<std::uint32_t> ring_;   // p, q, then the link vertices (indices)

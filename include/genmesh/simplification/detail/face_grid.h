@@ -14,6 +14,7 @@
 // compact() at the halvings between).
 #pragma once
 
+#include <genmesh/detail/memory/huge_pages.h>
 #include <genmesh/detail/prefetch.h>
 
 #include <Eigen/Core>
@@ -652,7 +653,7 @@ class Face_grid {
     }
   }
   void grow() {
-    std::vector<Bucket> old(table_.size() * 2);
+    huge_page_vector<Bucket> old(table_.size() * 2);
     old.swap(table_);
     const std::size_t mask = table_.size() - 1;
     for (auto& b : old) {
@@ -666,9 +667,9 @@ class Face_grid {
   }
 
   double inv_ = 1.0;
-  std::vector<Bucket> table_;
+  huge_page_vector<Bucket> table_; // big ones on huge pages (memory/huge_pages.h)
   std::size_t used_ = 0;
-  std::vector<std::uint8_t> version_; // per face, 5 bits (and 7 bytes of padding)
+  huge_page_vector<std::uint8_t> version_; // per face, 5 bits (and 7 bytes of padding)
   std::size_t faces_ = 0;             // the face indices the grid was reset for
   std::vector<Entry> hits_;           // query()'s
   std::vector<std::uint32_t> found_;  // query()'s: the current hits' faces
