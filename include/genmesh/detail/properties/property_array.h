@@ -126,7 +126,7 @@ public:
 
 private:
   T default_;
-  huge_page_vector<Storage> data_; // points: huge pages (memory/huge_pages.h)
+  huge_page_vector<Storage> data_; // big ones on huge pages (memory/huge_pages.h)
 };
 
 /// A typed handle to one property array, indexed by Key (an index type with
