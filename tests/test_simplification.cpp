@@ -1387,6 +1387,12 @@ struct Xorshift64 {
     return state;
   }
 };
+
+// Two grid entries equal in every field (face, flags, bins).
+bool same_entry(const genmesh::detail::simplification::Grid_entry& a,
+                const genmesh::detail::simplification::Grid_entry& b) {
+  return a.face == b.face && a.flags == b.flags && a.x == b.x && a.y == b.y && a.z == b.z;
+}
 } // namespace
 
 // The grid's walk over a cell: the SSE2 path (four entries at a time) and
@@ -1423,25 +1429,13 @@ TEST(FaceGrid, VectorWalkEqualsScalarWalk) {
     ASSERT_EQ(k, expected);
 #if defined(__SSE2__)
     ASSERT_EQ(ds::grid_select_sse2(entries.data(), n, probe, vector.data()), k);
-    for (std::size_t i = 0; i < k; ++i) {
-      ASSERT_EQ(vector[i].face, scalar[i].face);
-      ASSERT_EQ(vector[i].flags, scalar[i].flags);
-      ASSERT_EQ(vector[i].x, scalar[i].x);
-      ASSERT_EQ(vector[i].y, scalar[i].y);
-      ASSERT_EQ(vector[i].z, scalar[i].z);
-    }
+    for (std::size_t i = 0; i < k; ++i) ASSERT_TRUE(same_entry(vector[i], scalar[i])) << "entry " << i;
 #endif
 #if defined(GENMESH_GRID_SELECT_AVX512)
     if (ds::grid_select_has_avx512()) {
       std::fill(vector.begin(), vector.end(), ds::Grid_entry{});
       ASSERT_EQ(ds::grid_select_avx512(entries.data(), n, probe, vector.data()), k);
-      for (std::size_t i = 0; i < k; ++i) {
-        ASSERT_EQ(vector[i].face, scalar[i].face);
-        ASSERT_EQ(vector[i].flags, scalar[i].flags);
-        ASSERT_EQ(vector[i].x, scalar[i].x);
-        ASSERT_EQ(vector[i].y, scalar[i].y);
-        ASSERT_EQ(vector[i].z, scalar[i].z);
-      }
+      for (std::size_t i = 0; i < k; ++i) ASSERT_TRUE(same_entry(vector[i], scalar[i])) << "entry " << i;
       // Nothing written past the entries picked.
       for (std::size_t i = k; i < vector.size(); ++i) ASSERT_EQ(vector[i].face, 0u);
     }
@@ -1479,13 +1473,7 @@ TEST(FaceGrid, VectorDropKeepsTheLiveEntries) {
       if ((version[face] & ~0x40) == flags >> 3) expected[k++] = entries[i];
     }
     ASSERT_EQ(ds::grid_drop_stale_avx512(entries.data(), n, version.data()), k);
-    for (std::size_t i = 0; i < k; ++i) {
-      ASSERT_EQ(entries[i].face, expected[i].face);
-      ASSERT_EQ(entries[i].flags, expected[i].flags);
-      ASSERT_EQ(entries[i].x, expected[i].x);
-      ASSERT_EQ(entries[i].y, expected[i].y);
-      ASSERT_EQ(entries[i].z, expected[i].z);
-    }
+    for (std::size_t i = 0; i < k; ++i) ASSERT_TRUE(same_entry(entries[i], expected[i])) << "entry " << i;
   }
 #else
   GTEST_SKIP() << "no AVX-512 path";

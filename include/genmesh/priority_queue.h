@@ -121,13 +121,7 @@ class Mutable_priority_queue {
   void push(std::size_t key, Priority p) {
     assert(!contains(key));
     if (key >= position_.size()) grow_for(key);
-    if constexpr (select_children) {
-      if (banded_ && !(p < band_)) {
-        far_add(Entry{std::move(p), static_cast<Index>(key)});
-        if (near_ < 2) refill();
-        return;
-      }
-    }
+    if (pushed_far(key, p)) return;
     near_push(Entry{std::move(p), static_cast<Index>(key)});
     sift_up(near_ - 1);
   }
@@ -138,13 +132,7 @@ class Mutable_priority_queue {
   void push_unordered(std::size_t key, Priority p) {
     assert(!contains(key));
     if (key >= position_.size()) grow_for(key);
-    if constexpr (select_children) {
-      if (banded_ && !(p < band_)) {
-        far_add(Entry{std::move(p), static_cast<Index>(key)});
-        if (near_ < 2) refill();
-        return;
-      }
-    }
+    if (pushed_far(key, p)) return;
     near_push(Entry{std::move(p), static_cast<Index>(key)});
   }
   /// Restores the order after push_unordered (Floyd's construction: O(n),
@@ -423,6 +411,18 @@ class Mutable_priority_queue {
     if (near_ == far_) grow_slots(std::max<std::size_t>(16, 2 * heap_.size()));
     position_[e.key] = static_cast<Index>(--far_);
     heap_[far_] = std::move(e);
+  }
+  // Queues key in the far part where a band is set and p is at or above
+  // it (push and push_unordered); false otherwise (p untouched).
+  bool pushed_far(std::size_t key, Priority& p) {
+    if constexpr (select_children) {
+      if (banded_ && !(p < band_)) {
+        far_add(Entry{std::move(p), static_cast<Index>(key)});
+        if (near_ < 2) refill();
+        return true;
+      }
+    }
+    return false;
   }
   // Takes the far entry of `key` out of slot i (key given: reading it from
   // the slot was a cache miss the removal waited for).
