@@ -12,6 +12,10 @@
 // all below 2 MiB, is unchanged (docs/benchmarks.md, "Huge pages for the big
 // arrays, session 19").
 //
+// (Large_allocator, large_allocator.h, rounds short-lived blocks of 1 MiB and
+// more up to whole 2 MiB-aligned pages instead, for fewer first-touch faults;
+// it advises through advise_huge_pages too.)
+//
 // Only advice: the blocks still come from operator new (programs that count
 // or replace it see them; no over-allocation, no 2 MiB alignment), and only
 // the whole 2 MiB pages inside a block are advised, so blocks below 2 MiB

@@ -9,23 +9,23 @@
 // faults ~2 500 times less, at the price of rounding each such block up to
 // whole 2 MiB pages (peak heap 15.5 -> 17.4 MB there; docs/benchmarks.md,
 // "Isotropic remeshing, session 8"). Smaller blocks go through operator new.
-// Stateless; equal to every other instance.
+// Stateless; equal to every other instance. (For long-lived arrays that
+// must not grow, huge_pages.h's Huge_page_allocator only advises, without
+// the rounding; both advise through advise_huge_pages.)
 #pragma once
+
+#include <genmesh/detail/memory/huge_pages.h>
 
 #include <cstddef>
 #include <new>
 #include <vector>
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace genmesh::detail {
 
 template <class T>
 struct Large_allocator {
   using value_type = T;
-  static constexpr std::size_t huge_page = std::size_t(2) << 20;
+  static constexpr std::size_t huge_page = huge_page_bytes;
   static constexpr std::size_t threshold = std::size_t(1) << 20;
 
   Large_allocator() = default;
@@ -40,9 +40,7 @@ struct Large_allocator {
     // Aligned operator new (not aligned_alloc), so that programs that count
     // or replace operator new see these blocks too.
     void* p = ::operator new(rounded, std::align_val_t(huge_page));
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    ::madvise(p, rounded, MADV_HUGEPAGE);  // advice only: failure changes nothing
-#endif
+    advise_huge_pages(p, rounded); // the whole block: p and rounded are whole pages
     return static_cast<T*>(p);
   }
   void deallocate(T* p, std::size_t n) noexcept {
