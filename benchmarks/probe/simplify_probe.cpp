@@ -10,7 +10,9 @@
 //             hole:N (N × N grid with a hole), tilt:N (hole:N, tilted)
 //     BACKEND he | sm | im (Halfedge_mesh, CGAL::Surface_mesh, Incidence_mesh)
 //     keys    loop=L (Loop levels first, default 0), ratio=R (default 0.1),
-//             guard=0|1 (default 1), schedule=queue|passes, reps=N (default 1)
+//             guard=0|1 (default 1), schedule=queue|passes, reps=N (default 1),
+//             order=morton (the input renumbered in space first: how much of a
+//             run is the input's memory order; another mesh, another hash)
 //
 // Prints one line: input, backend, options, faces, exact tests, hash, min
 // and median seconds.
@@ -47,6 +49,7 @@ struct Options {
   bool guard = true;
   genmesh::Schedule schedule = genmesh::Schedule::queue;
   int reps = 1;
+  bool morton = false;
 };
 
 double thread_seconds() {
@@ -65,6 +68,56 @@ std::uint64_t fnv1a(const genmesh::Polygon_soup& s) {
   add(s.indices.data(), s.indices.size() * sizeof(s.indices[0]));
   add(s.offsets.data(), s.offsets.size() * sizeof(s.offsets[0]));
   return h;
+}
+
+// The soup renumbered: its vertices by the Morton code of their point (21
+// bits an axis over the bounding box), its faces by their smallest new
+// corner; each face keeps its corners' cyclic order.
+std::uint64_t spread(std::uint64_t v) {
+  v &= 0x1fffff;
+  v = (v | v << 32) & 0x1f00000000ffffull;
+  v = (v | v << 16) & 0x1f0000ff0000ffull;
+  v = (v | v << 8) & 0x100f00f00f00f00full;
+  v = (v | v << 4) & 0x10c30c30c30c30c3ull;
+  v = (v | v << 2) & 0x1249249249249249ull;
+  return v;
+}
+void morton_order(genmesh::Polygon_soup& s) {
+  Eigen::Vector3d lo = s.points[0], hi = s.points[0];
+  for (const auto& p : s.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double scale = 2097151.0 / (hi - lo).maxCoeff();
+  std::vector<std::pair<std::uint64_t, std::size_t>> key(s.points.size());
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Eigen::Vector3d q = (s.points[i] - lo) * scale;
+    key[i] = {spread(std::uint64_t(q.x())) | spread(std::uint64_t(q.y())) << 1 | spread(std::uint64_t(q.z())) << 2, i};
+  }
+  std::sort(key.begin(), key.end());
+  std::vector<std::size_t> to(s.points.size());
+  decltype(s.points) pts(s.points.size());
+  for (std::size_t i = 0; i < key.size(); ++i) {
+    to[key[i].second] = i;
+    pts[i] = s.points[key[i].second];
+  }
+  s.points = pts;
+  std::vector<std::pair<std::size_t, std::size_t>> fk(s.num_faces());
+  for (std::size_t f = 0; f < s.num_faces(); ++f) {
+    std::size_t m = SIZE_MAX;
+    for (auto k = s.offsets[f]; k < s.offsets[f + 1]; ++k) m = std::min<std::size_t>(m, to[s.indices[k]]);
+    fk[f] = {m, f};
+  }
+  std::sort(fk.begin(), fk.end());
+  genmesh::Polygon_soup t;
+  t.points = s.points;
+
+  for (const auto& [m, f] : fk) {
+    for (auto k = s.offsets[f]; k < s.offsets[f + 1]; ++k)
+      t.indices.push_back(static_cast<decltype(t.indices)::value_type>(to[s.indices[k]]));
+    t.offsets.push_back(static_cast<decltype(t.offsets)::value_type>(t.indices.size()));
+  }
+  s = std::move(t);
 }
 
 genmesh::Polygon_soup input(const std::string& spec, int loop) {
@@ -87,7 +140,8 @@ genmesh::Polygon_soup input(const std::string& spec, int loop) {
 
 template <class G>
 int run(const std::string& spec, const char* backend, const Options& o) {
-  const genmesh::Polygon_soup in = input(spec, o.loop);
+  genmesh::Polygon_soup in = input(spec, o.loop);
+  if (o.morton) morton_order(in);
   const auto target = static_cast<std::size_t>(std::ceil(o.ratio * static_cast<double>(in.num_faces())));
   std::vector<double> seconds;
   genmesh::Simplification_result r;
@@ -122,7 +176,7 @@ int run(const std::string& spec, const char* backend, const Options& o) {
 int main(int argc, char** argv) try {
   if (argc < 3) {
     std::fprintf(stderr, "usage: simplify_probe INPUT he|sm|im [loop=L] [ratio=R] [guard=0|1] "
-                         "[schedule=queue|passes] [reps=N]\n");
+                         "[schedule=queue|passes] [order=morton] [reps=N]\n");
     return 2;
   }
   Options o;
@@ -134,6 +188,7 @@ int main(int argc, char** argv) try {
     else if (k == "ratio") o.ratio = std::stod(v);
     else if (k == "guard") o.guard = v != "0";
     else if (k == "schedule") o.schedule = v == "passes" ? genmesh::Schedule::passes : genmesh::Schedule::queue;
+    else if (k == "order") o.morton = v == "morton";
     else if (k == "reps") o.reps = std::max(1, std::stoi(v));
     else {
       std::fprintf(stderr, "simplify_probe: unknown option '%s'\n", a.c_str());
