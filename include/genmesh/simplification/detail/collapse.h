@@ -33,6 +33,7 @@
 #endif
 
 #include <genmesh/concepts.h>
+#include <genmesh/detail/branchless.h>
 #include <genmesh/detail/geometry/predicates.h>
 #include <genmesh/detail/memory/huge_pages.h>
 #include <genmesh/detail/prefetch.h>
@@ -198,8 +199,8 @@ inline bool is_simple_polygon(std::span<const std::array<double, 2>> q) {
       std::uint64_t meet = 0;
       for (std::size_t j = j0; j < stop; ++j) {
         const auto &c = q[j], &d = q[j + 1 == n ? 0 : j + 1];
-        const bool apart = (std::max(c[0], d[0]) < x0) | (std::min(c[0], d[0]) > x1) |
-                           (std::max(c[1], d[1]) < y0) | (std::min(c[1], d[1]) > y1);
+        const bool apart = genmesh::detail::any_true(std::max(c[0], d[0]) < x0, std::min(c[0], d[0]) > x1,
+                                                     std::max(c[1], d[1]) < y0, std::min(c[1], d[1]) > y1);
         meet |= static_cast<std::uint64_t>(!apart) << (j - j0);
       }
       for (; meet != 0; meet &= meet - 1) {
@@ -1589,7 +1590,7 @@ class Collapser {
       const std::uint64_t e = ring_edges_[i];
       const auto a = at(e >> 32), b = at(e & 0xffffffffu);
       if (!positive(c, a, b)) return -1;
-      crossings += (a[1] < c[1]) & (c[1] <= b[1]);
+      crossings += genmesh::detail::all_true(a[1] < c[1], c[1] <= b[1]);
     }
     return crossings == 1 ? 1 : 0;
   }
@@ -2086,7 +2087,7 @@ class Collapser {
       // Surface_mesh: 36k of 1.04M mispredicted branches fewer (callgrind
       // --branch-sim), 0.9 % more instructions, 3 % faster (pair ratio
       // 0.970, 15 rounds); either change alone no faster in the model.)
-      if ((u.id[c] == t.id[0]) | (u.id[c] == t.id[1]) | (u.id[c] == t.id[2])) continue;
+      if (genmesh::detail::any_true(u.id[c] == t.id[0], u.id[c] == t.id[1], u.id[c] == t.id[2])) continue;
       const Eigen::Vector3d d = u.p[c] - t.p[0];
       const double s = n.dot(d), bound = scale * d.cwiseAbs().maxCoeff();
       const int sc = static_cast<int>(s > bound) - static_cast<int>(s < -bound);
