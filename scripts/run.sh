@@ -85,6 +85,7 @@ case "${1:-}" in
     cmake --build "$build" -j "$jobs" --target genmesh_cli
     "$build/tools/genmesh" demo ;;
   test)
+    packages+=(clang)   # the install.consumer_clang test (tests/consumer.cmake)
     setup
     configure
     cmake --build "$build" -j "$jobs"

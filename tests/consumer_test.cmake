@@ -15,6 +15,17 @@ if(NOT EXISTS ${prefix}/lib/cmake/genmesh/genmeshConfig.cmake AND
 endif()
 run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/build
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release
-    -DCMAKE_CXX_COMPILER=${CMAKE_CXX_COMPILER})
+    -DCMAKE_CXX_COMPILER=${CMAKE_CXX_COMPILER} -DCONSUMER_EXAMPLES=${CONSUMER_EXAMPLES})
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/consumer)
+# The examples, when built (CONSUMER_EXAMPLES): each must run and succeed.
+if(CONSUMER_EXAMPLES)
+  file(GLOB examples ${CONSUMER_EXAMPLES}/*.cpp)
+  if(NOT examples)
+    message(FATAL_ERROR "no example found in ${CONSUMER_EXAMPLES}")
+  endif()
+  foreach(src IN LISTS examples)
+    get_filename_component(name ${src} NAME_WE)
+    run(${WORK_DIR}/build/example_${name})
+  endforeach()
+endif()
