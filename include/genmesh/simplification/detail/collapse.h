@@ -1770,7 +1770,21 @@ class Collapser {
 
   // Would the faces the collapse of edge(h) into target(h) at x makes meet
   // any other face, or each other, beyond what they share? (Exact.)
+  //
+  // GENMESH_SIMPLIFICATION_GUARD_FLOOR: a measurement hook, not an option
+  // (docs/benchmarks.md, "what it costs at least", session 20). Defined to
+  // N, the search stops after part N and allows the collapse; for timing
+  // inputs on which the guard refuses nothing (then the same meshes).
+  // 1: at once (the grid's upkeep alone), 2: after the walk (flat-star
+  // test, star hidden and shown, new faces listed), 3: after the query
+  // (new faces' normals and boxes, grid_.query), 4: after the near faces'
+  // corners (points and flags asked for, as below), 5: after the ring
+  // certificate (classify_near and the axes tried), 6: as 4, and every
+  // near face's points read (what any exact test of them reads).
   bool stays_embedded(H h, const Eigen::Vector3d& x) {
+#if GENMESH_SIMPLIFICATION_GUARD_FLOOR == 1
+    return true;
+#endif
     if (stays_in_flat_star(h, x)) return true;
     const std::uint32_t ip = static_cast<std::uint32_t>(vi(source(h, g_))),
                         iq = static_cast<std::uint32_t>(vi(target(h, g_)));
@@ -1829,6 +1843,10 @@ class Collapser {
     auto show_star = [&] {
       for (std::size_t i = 0; i < nstar; ++i) grid_.show(star_[i]);
     };
+#if GENMESH_SIMPLIFICATION_GUARD_FLOOR == 2
+    show_star();
+    return true;
+#endif
     if (fresh_.empty()) {
       show_star();
       return true;
@@ -1863,6 +1881,9 @@ class Collapser {
     near_.clear();
     grid_.query(all, near_);
     show_star();
+#if GENMESH_SIMPLIFICATION_GUARD_FLOOR == 3
+    return true;
+#endif
     // Their corners, read from the mesh. Where the mesh is large (prefetch_),
     // in stages, each a loop of independent reads (a face's halfedge, then
     // its corners, then their points and flags asked for): nearly every read
@@ -1891,10 +1912,19 @@ class Collapser {
     } else {
       for (std::size_t i = 0; i < near_.size(); ++i) near_corners_[i] = corners_of(face_halfedge(near_[i]));
     }
+#if GENMESH_SIMPLIFICATION_GUARD_FLOOR == 4
+    return true;
+#elif GENMESH_SIMPLIFICATION_GUARD_FLOOR == 6
+    for (const auto& v : near_corners_) floor_sum_ += (pos_[v[0]] + pos_[v[1]] + pos_[v[2]]).sum();
+    return true;
+#endif
     // With the ring certified, the new faces meet each other and every face
     // at a link vertex only in what they share: only the faces with no
     // corner in ring_ (p, q and the link) are left to test.
     const bool certified = ring_projects_one_to_one(x, border_star);
+#if GENMESH_SIMPLIFICATION_GUARD_FLOOR == 5
+    return true;
+#endif
     if (certified) {
 #ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
       verify_certificate(near_corners_, border_star);
@@ -2458,6 +2488,9 @@ class Collapser {
   std::vector<std::uint32_t> near_; // faces a grid query found
   std::vector<std::uint32_t> star_; // the faces around p and q (indices; the two of the edge twice), a prefix
   std::vector<std::uint32_t> link_buf_; // stays_embedded's scratch for ring_
+#if GENMESH_SIMPLIFICATION_GUARD_FLOOR == 6
+  double floor_sum_ = 0; // the measurement hook's reads (see stays_embedded)
+#endif
   std::vector<H> near_h_;           // a halfedge of each
   std::vector<std::pair<std::array<std::uint32_t, 3>, std::uint64_t>> candidates_; // corners, new faces its box meets
   std::vector<Fresh_plane> fresh_plane_;
