@@ -501,6 +501,28 @@ TYPED_TEST(Simplification, MinAngleAndMaxValence) {
   EXPECT_GT(worst_aspect(free_mesh), 2.0);
 }
 
+// A flat 64 × 64 grid to 25 %: every plane quadric is 0, so every cost ties
+// at exactly 0, and the shortest edge goes first (then the vertex-index
+// pair). The grid is decimated evenly: a regular grid's 1-to-4 coarsening
+// has valence 6 inside and 4 at the border, the run ends with at most 7
+// (the bound 8 leaves one of slack); its smallest angle is the grid's
+// diagonal against a coarser edge, atan(1/3) = 18.4°. Before the length
+// order the pair alone collapsed edge after edge into one survivor:
+// valence 114 and a smallest angle of 0.43°.
+TYPED_TEST(Simplification, FlatGridDecimatedEvenly) {
+  const Polygon_soup soup = genmesh::make_grid(64, 64);
+  TypeParam g = mesh_of<TypeParam>(soup);
+  const auto r = genmesh::simplify(g, {.target_ratio = 0.25});
+  EXPECT_EQ(r.stop_reason, genmesh::Stop_reason::target_faces);
+  std::size_t d = 0;
+  for (auto v : vertices(g)) d = std::max<std::size_t>(d, degree(v, g));
+  EXPECT_LE(d, 8u);
+  EXPECT_GE(smallest_angle(g), 15.0);
+  genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(soup);
+  genmesh::simplify(ref, {.target_ratio = 0.25});
+  expect_same_soup(canonical_of(g), canonical_of(ref), "flat grid");
+}
+
 // Two concentric spheres 3% apart (the inner one facing inwards): coarse
 // enough (1.5% of the faces; at 2% whether the unguarded run happens to cut
 // through depends on the quadrics' rounding), either cuts through the other. .prevent_self_intersections (the

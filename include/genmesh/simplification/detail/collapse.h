@@ -279,7 +279,8 @@ class Collapser {
         break;
       }
       // The queue holds costs as floats (monotone: the order only gains
-      // ties); the bound is checked on the exact cost, in collapse().
+      // ties; costs at 0 as negative floats, see priority()); the bound is
+      // checked on the exact cost, in collapse().
       const std::size_t ei = queue_.pop();
       if (prefetch_ && !queue_.empty())
         ahead_begin(queue_.top(), queue_.size() >= 2, queue_.size() >= 2 ? queue_.second() : 0);
@@ -614,11 +615,11 @@ class Collapser {
                                     Relative_quadric::absolute_lanes(data_[hb], pos_[hb], data_[b], pos_[b]);
           double cost[2];
           costs_two(sum, ha, hb, a, b, cost);
-          queue_.push_unordered(held, static_cast<float>(cost[0]));
-          queue_.push_unordered(k, static_cast<float>(cost[1]));
+          queue_.push_unordered(held, priority(cost[0], ha, hb));
+          queue_.push_unordered(k, priority(cost[1], a, b));
         }
         if (holding && evaluate(halfedge(edge_of(held), g_), pl))
-          queue_.push_unordered(held, static_cast<float>(pl.cost));
+          queue_.push_unordered(held, priority(pl.cost, ha, hb));
         queue_.heapify();
         return;
       }
@@ -626,7 +627,7 @@ class Collapser {
 #endif
     for (const E e : es) {
       if (prefetch_ && lead != end) ask();
-      if (evaluate(halfedge(e, g_), pl)) queue_.push_unordered(ei(e), static_cast<float>(pl.cost));
+      if (evaluate(halfedge(e, g_), pl)) queue_.push_unordered(ei(e), priority(pl.cost, halfedge(e, g_)));
     }
     queue_.heapify();
   }
@@ -782,7 +783,19 @@ class Collapser {
     while (first != last) {
       It run = first + 1;
       while (run != last && (*run >> 32) == (*first >> 32)) ++run;
-      if (run - first > 1) {
+      if (run - first > 1 && (*first >> 32) == 0) {
+        // Cost 0 (see priority()): the shortest edge first, then by pair.
+        flat_ties_.clear();
+        for (It x = first; x != run; ++x) {
+          const auto k = static_cast<std::uint32_t>(*x);
+          const H h = halfedge(edge_of(k), g_);
+          flat_ties_.push_back({std::bit_cast<std::uint32_t>(squared_length(vi(source(h, g_)), vi(target(h, g_)))),
+                                pair(k), *x});
+        }
+        std::sort(flat_ties_.begin(), flat_ties_.end());
+        for (std::size_t i = 0; i < flat_ties_.size(); ++i)
+          first[static_cast<std::ptrdiff_t>(i)] = std::get<2>(flat_ties_[i]);
+      } else if (run - first > 1) {
         ties_.clear();
         for (It x = first; x != run; ++x) ties_.push_back({pair(static_cast<std::uint32_t>(*x)), *x});
         std::sort(ties_.begin(), ties_.end());
@@ -846,7 +859,46 @@ class Collapser {
     return (a << 32) | b;
   }
 
-  // The queue's order: by cost, ties by the vertex-index pair.
+  // The squared length of the edge (a, b) as a float (a non-negative float's
+  // bits order as integers), the same on every backend (from the points, the
+  // ends in index order).
+  float squared_length(std::size_t a, std::size_t b) const {
+    sort_two(a, b);
+    return static_cast<float>((pos_[b] - pos_[a]).squaredNorm());
+  }
+
+  // The queue's priority of an edge (a, b) of cost `cost`: the cost as a float
+  // where that is positive (or NaN); where it is 0 (every cost of a flat
+  // region: its plane quadrics vanish) a negative float that increases
+  // strictly with the edge's squared length (as a float), so that such ties
+  // go to the shortest edge first (the pair alone sent edge after edge into
+  // one survivor: docs/simplification.md, "Flat regions"). The order is
+  // kept: a positive float is above every negative one, and two positive
+  // costs keep their floats; only costs whose floats tie at 0 (a double
+  // below 2^-149 rounds to 0), which the pair alone ordered before, are now
+  // ordered by length and then by the pair. A negative cost counts as 0, as
+  // in Schedule::passes (no policy here gives one: each clamps at 0 or sums
+  // squares).
+  // The length's float bits u (0 to 0x7f800000) map to the negative float of
+  // magnitude bits 0x7f7fffff − min(u, 0x7effffff): from −FLT_MAX (length 0)
+  // to −FLT_MIN (a squared length of 2^126 or more), finite and normal (no
+  // −0, which would tie with +0; no denormal, which a flush-to-zero mode
+  // would read as 0).
+  [[gnu::noinline]] float flat_priority(std::size_t a, std::size_t b) const {
+    const std::uint32_t u = std::min(std::bit_cast<std::uint32_t>(squared_length(a, b)), 0x7effffffu);
+    return std::bit_cast<float>(0x80000000u | (0x7f7fffffu - u));
+  }
+  float priority(double cost, std::size_t a, std::size_t b) const {
+    const float f = static_cast<float>(cost);
+    return f <= 0 ? flat_priority(a, b) : f;
+  }
+  float priority(double cost, H h) const {
+    const float f = static_cast<float>(cost);
+    return f <= 0 ? flat_priority(vi(source(h, g_)), vi(target(h, g_))) : f;
+  }
+
+  // The queue's order: by cost, ties by the vertex-index pair (cost 0: by
+  // length first, see priority()).
   struct Order {
     static constexpr bool refines_less = true; // the pair only breaks ties (see Mutable_priority_queue)
     const Collapser* c;
@@ -2156,7 +2208,7 @@ class Collapser {
     refused_[k] = 0;
     const H h = halfedge(e, g_);
     Placement pl;
-    if (evaluate(h, pl)) queue_.update(k, static_cast<float>(pl.cost));
+    if (evaluate(h, pl)) queue_.update(k, priority(pl.cost, h));
     else queue_.erase(k);
   }
 
@@ -2318,8 +2370,8 @@ class Collapser {
           sort_two(a0, b0);
           sort_two(a1, b1);
           costs_two(sum, a0, b0, a1, b1, cost);
-          queue_.update(k[0], static_cast<float>(cost[0]));
-          queue_.update(k[1], static_cast<float>(cost[1]));
+          queue_.update(k[0], priority(cost[0], a0, b0));
+          queue_.update(k[1], priority(cost[1], a1, b1));
         }
         if (i < around_.size()) requeue(edge(around_[i], g_));
       }
@@ -2423,6 +2475,7 @@ class Collapser {
   std::vector<std::uint64_t> cand_;
   std::vector<std::uint32_t> high_, low_; // per pass: candidates by the top bits of their cost, then by the others
   std::vector<std::pair<std::uint64_t, std::uint64_t>> ties_; // (vertex-index pair, candidate)
+  std::vector<std::tuple<std::uint32_t, std::uint64_t, std::uint64_t>> flat_ties_; // (length² bits, pair, candidate)
   // Per edge, its cost at the last pass that computed it (kept while no
   // collapse touches its ends), or a mark.
   struct Cost_mark {
