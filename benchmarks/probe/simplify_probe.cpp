@@ -17,6 +17,7 @@
 // Prints one line: input, backend, options, faces, exact tests, hash, min
 // and median seconds.
 #include <genmesh/adaptors/cgal.h>
+#include <genmesh/detail/geometry/morton.h>
 #include <genmesh/generators.h>
 #include <genmesh/halfedge_mesh.h>
 #include <genmesh/incidence_mesh.h>
@@ -73,15 +74,6 @@ std::uint64_t fnv1a(const genmesh::Polygon_soup& s) {
 // The soup renumbered: its vertices by the Morton code of their point (21
 // bits an axis over the bounding box), its faces by their smallest new
 // corner; each face keeps its corners' cyclic order.
-std::uint64_t spread(std::uint64_t v) {
-  v &= 0x1fffff;
-  v = (v | v << 32) & 0x1f00000000ffffull;
-  v = (v | v << 16) & 0x1f0000ff0000ffull;
-  v = (v | v << 8) & 0x100f00f00f00f00full;
-  v = (v | v << 4) & 0x10c30c30c30c30c3ull;
-  v = (v | v << 2) & 0x1249249249249249ull;
-  return v;
-}
 void morton_order(genmesh::Polygon_soup& s) {
   Eigen::Vector3d lo = s.points[0], hi = s.points[0];
   for (const auto& p : s.points) {
@@ -92,7 +84,10 @@ void morton_order(genmesh::Polygon_soup& s) {
   std::vector<std::pair<std::uint64_t, std::size_t>> key(s.points.size());
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     const Eigen::Vector3d q = (s.points[i] - lo) * scale;
-    key[i] = {spread(std::uint64_t(q.x())) | spread(std::uint64_t(q.y())) << 1 | spread(std::uint64_t(q.z())) << 2, i};
+    using genmesh::detail::morton_spread;
+    key[i] = {morton_spread(std::uint64_t(q.x())) | morton_spread(std::uint64_t(q.y())) << 1 |
+                  morton_spread(std::uint64_t(q.z())) << 2,
+              i};
   }
   std::sort(key.begin(), key.end());
   std::vector<std::size_t> to(s.points.size());
