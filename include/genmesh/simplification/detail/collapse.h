@@ -31,6 +31,14 @@
 #ifdef GENMESH_SIMPLIFICATION_VERIFY_CERTIFICATES
 #include <stdexcept>
 #endif
+// The guard's measurement hook (see stays_embedded): 0 (off) unless
+// GENMESH_SIMPLIFICATION_GUARD_FLOOR is defined; a named 0, so that builds
+// with -Wundef see no undefined macro in an #if.
+#ifdef GENMESH_SIMPLIFICATION_GUARD_FLOOR
+#define GENMESH_DETAIL_GUARD_FLOOR GENMESH_SIMPLIFICATION_GUARD_FLOOR
+#else
+#define GENMESH_DETAIL_GUARD_FLOOR 0
+#endif
 
 #include <genmesh/concepts.h>
 #include <genmesh/detail/branchless.h>
@@ -1834,7 +1842,7 @@ class Collapser {
   // certificate (classify_near and the axes tried), 6: as 4, and every
   // near face's points read (what any exact test of them reads).
   bool stays_embedded(H h, const Eigen::Vector3d& x) {
-#if GENMESH_SIMPLIFICATION_GUARD_FLOOR == 1
+#if GENMESH_DETAIL_GUARD_FLOOR == 1
     return true;
 #endif
     if (stays_in_flat_star(h, x)) return true;
@@ -1895,7 +1903,7 @@ class Collapser {
     auto show_star = [&] {
       for (std::size_t i = 0; i < nstar; ++i) grid_.show(star_[i]);
     };
-#if GENMESH_SIMPLIFICATION_GUARD_FLOOR == 2
+#if GENMESH_DETAIL_GUARD_FLOOR == 2
     show_star();
     return true;
 #endif
@@ -1933,7 +1941,7 @@ class Collapser {
     near_.clear();
     grid_.query(all, near_);
     show_star();
-#if GENMESH_SIMPLIFICATION_GUARD_FLOOR == 3
+#if GENMESH_DETAIL_GUARD_FLOOR == 3
     return true;
 #endif
     // Their corners, read from the mesh. Where the mesh is large (prefetch_),
@@ -1964,9 +1972,9 @@ class Collapser {
     } else {
       for (std::size_t i = 0; i < near_.size(); ++i) near_corners_[i] = corners_of(face_halfedge(near_[i]));
     }
-#if GENMESH_SIMPLIFICATION_GUARD_FLOOR == 4
+#if GENMESH_DETAIL_GUARD_FLOOR == 4
     return true;
-#elif GENMESH_SIMPLIFICATION_GUARD_FLOOR == 6
+#elif GENMESH_DETAIL_GUARD_FLOOR == 6
     for (const auto& v : near_corners_) floor_sum_ += (pos_[v[0]] + pos_[v[1]] + pos_[v[2]]).sum();
     return true;
 #endif
@@ -1974,7 +1982,7 @@ class Collapser {
     // at a link vertex only in what they share: only the faces with no
     // corner in ring_ (p, q and the link) are left to test.
     const bool certified = ring_projects_one_to_one(x, border_star);
-#if GENMESH_SIMPLIFICATION_GUARD_FLOOR == 5
+#if GENMESH_DETAIL_GUARD_FLOOR == 5
     return true;
 #endif
     if (certified) {
@@ -2541,7 +2549,7 @@ class Collapser {
   std::vector<std::uint32_t> near_; // faces a grid query found
   std::vector<std::uint32_t> star_; // the faces around p and q (indices; the two of the edge twice), a prefix
   std::vector<std::uint32_t> link_buf_; // stays_embedded's scratch for ring_
-#if GENMESH_SIMPLIFICATION_GUARD_FLOOR == 6
+#if GENMESH_DETAIL_GUARD_FLOOR == 6
   double floor_sum_ = 0; // the measurement hook's reads (see stays_embedded)
 #endif
   std::vector<H> near_h_;           // a halfedge of each
