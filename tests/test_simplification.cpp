@@ -523,6 +523,26 @@ TYPED_TEST(Simplification, FlatGridDecimatedEvenly) {
   expect_same_soup(canonical_of(g), canonical_of(ref), "flat grid");
 }
 
+// The same plane tilted (the probe's tilt:64: a 64 × 64 grid with a hole, y
+// and z mixed, coordinates no longer exact): its costs are rounding noise of
+// the float-stored quadrics, not 0, so the length order does not apply and
+// the order is arbitrary; no collapse may make a sliver (a face whose height
+// over its longest edge is below 1e-4 of it) out of a face that was not one.
+// Before (session 20, the length order alone): smallest angle 0.000°,
+// largest aspect ratio about 2e29.
+TYPED_TEST(Simplification, TiltedFlatGridMakesNoSliver) {
+  Polygon_soup soup = genmesh::make_grid_with_hole(64);
+  for (auto& p : soup.points) p = Eigen::Vector3d(p.x(), p.y() * 0.6, p.y() * 0.8 + 0.3 * p.x());
+  TypeParam g = mesh_of<TypeParam>(soup);
+  const auto r = genmesh::simplify(g, {.target_ratio = 0.25});
+  EXPECT_EQ(r.stop_reason, genmesh::Stop_reason::target_faces);
+  EXPECT_GE(smallest_angle(g), 0.1);
+  EXPECT_LE(genmesh::triangle_quality(g).max_aspect_ratio, 1e4);
+  genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(soup);
+  genmesh::simplify(ref, {.target_ratio = 0.25});
+  expect_same_soup(canonical_of(g), canonical_of(ref), "tilted flat grid");
+}
+
 // Two concentric spheres 3% apart (the inner one facing inwards): coarse
 // enough (1.5% of the faces; at 2% whether the unguarded run happens to cut
 // through depends on the quadrics' rounding), either cuts through the other. .prevent_self_intersections (the

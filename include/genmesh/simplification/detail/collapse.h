@@ -1156,6 +1156,16 @@ class Collapser {
             const double d = n0.dot(n1);
             if (!(d > 0) || d * d < cos2 * l0 * l1) return false;
           }
+          // Nor a sliver: |n1|² ≤ 1e-8 s², s = |x − a|² + |x − b|² (between
+          // half and twice the longest edge's square m²: a face whose height
+          // over its longest edge m is below 0.5e-4 m to 2e-4 m), unless the face
+          // was one before. A tilted plane's costs are rounding noise, and its
+          // arbitrary order made faces of aspect ratio 1e29
+          // (docs/simplification.md, "Flat regions").
+          if (const double s1 = (x - pos_[ia]).squaredNorm() + (x - pos_[ib]).squaredNorm(); l1 <= 1e-8 * s1 * s1) {
+            const double s0 = (pos_[iv] - pos_[ia]).squaredNorm() + (pos_[iv] - pos_[ib]).squaredNorm();
+            if (!(l0 <= 1e-8 * s0 * s0)) return false;
+          }
           if (max_aspect > 0) {
             // No face above .max_aspect_ratio, unless it was as bad before.
             const double r1 = triangle_aspect_ratio(x, pos_[ia], pos_[ib]);
