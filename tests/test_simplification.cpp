@@ -536,8 +536,7 @@ TYPED_TEST(Simplification, TiltedFlatGridMakesNoSliver) {
   TypeParam g = mesh_of<TypeParam>(soup);
   const auto r = genmesh::simplify(g, {.target_ratio = 0.25});
   EXPECT_EQ(r.stop_reason, genmesh::Stop_reason::target_faces);
-  EXPECT_GE(smallest_angle(g), 0.1);
-  EXPECT_LE(genmesh::triangle_quality(g).max_aspect_ratio, 1e4);
+  EXPECT_GE(smallest_angle(g), 0.1); // a sliver has a tiny angle (needle or cap)
   genmesh_test::Halfedge_mesh ref = mesh_of<genmesh_test::Halfedge_mesh>(soup);
   genmesh::simplify(ref, {.target_ratio = 0.25});
   expect_same_soup(canonical_of(g), canonical_of(ref), "tilted flat grid");
