@@ -785,29 +785,28 @@ class Collapser {
   }
 
   // Candidates of equal cost (sorted by edge index so far, which differs
-  // between backends) in the order of their vertex-index pairs (see pair()).
+  // between backends) in the order of their vertex-index pairs (see pair());
+  // at cost 0 by length first.
   template <class It>
   void order_ties(It first, It last) {
     while (first != last) {
       It run = first + 1;
       while (run != last && (*run >> 32) == (*first >> 32)) ++run;
-      if (run - first > 1 && (*first >> 32) == 0) {
-        // Cost 0 (see priority()): the shortest edge first, then by pair.
-        flat_ties_.clear();
+      if (run - first > 1) {
+        // At cost 0 (see priority()) the shortest edge first, then by pair.
+        const bool flat = (*first >> 32) == 0;
+        ties_.clear();
         for (It x = first; x != run; ++x) {
           const auto k = static_cast<std::uint32_t>(*x);
-          const H h = halfedge(edge_of(k), g_);
-          flat_ties_.push_back({std::bit_cast<std::uint32_t>(squared_length(vi(source(h, g_)), vi(target(h, g_)))),
-                                pair(k), *x});
+          std::uint32_t length_bits = 0;
+          if (flat) {
+            const H h = halfedge(edge_of(k), g_);
+            length_bits = std::bit_cast<std::uint32_t>(squared_length(vi(source(h, g_)), vi(target(h, g_))));
+          }
+          ties_.push_back({length_bits, pair(k), *x});
         }
-        std::sort(flat_ties_.begin(), flat_ties_.end());
-        for (std::size_t i = 0; i < flat_ties_.size(); ++i)
-          first[static_cast<std::ptrdiff_t>(i)] = std::get<2>(flat_ties_[i]);
-      } else if (run - first > 1) {
-        ties_.clear();
-        for (It x = first; x != run; ++x) ties_.push_back({pair(static_cast<std::uint32_t>(*x)), *x});
         std::sort(ties_.begin(), ties_.end());
-        for (std::size_t i = 0; i < ties_.size(); ++i) first[static_cast<std::ptrdiff_t>(i)] = ties_[i].second;
+        for (std::size_t i = 0; i < ties_.size(); ++i) first[static_cast<std::ptrdiff_t>(i)] = std::get<2>(ties_[i]);
       }
       first = run;
     }
@@ -2492,8 +2491,8 @@ class Collapser {
   bool passes_ = false;
   std::vector<std::uint64_t> cand_;
   std::vector<std::uint32_t> high_, low_; // per pass: candidates by the top bits of their cost, then by the others
-  std::vector<std::pair<std::uint64_t, std::uint64_t>> ties_; // (vertex-index pair, candidate)
-  std::vector<std::tuple<std::uint32_t, std::uint64_t, std::uint64_t>> flat_ties_; // (length² bits, pair, candidate)
+  // (at cost 0 the squared length's float bits, else 0; vertex-index pair; candidate)
+  std::vector<std::tuple<std::uint32_t, std::uint64_t, std::uint64_t>> ties_;
   // Per edge, its cost at the last pass that computed it (kept while no
   // collapse touches its ends), or a mark.
   struct Cost_mark {
